@@ -1,0 +1,215 @@
+/*
+ * fabvdb.h — the public C API of fabvdb, a library that prepares 3D models for
+ * fabrication: repair, hollowing, drain holes, mold decomposition and molds.
+ *
+ * Conventions (see README "C API"):
+ *   - Opaque handles, each with one create/free pair; freeing NULL does nothing.
+ *   - Every fallible call takes the context first and returns fabvdb_status;
+ *     results come back through out-parameters, which are left untouched on
+ *     failure. The message of the last failure is fabvdb_last_error(ctx).
+ *   - No call throws or aborts; a cancelled call never returns a partial result.
+ *   - Option structs have an _init() that sets struct_size and the defaults.
+ *   - Lengths are millimetres.
+ *   - A context may be used by one thread at a time; fabvdb_ctx_cancel() is the
+ *     one call that is safe from any thread. Distinct contexts are independent.
+ *
+ * Copyright (C) 2026 the fabvdb developers. GPL-3.0-or-later.
+ */
+#ifndef FABVDB_H
+#define FABVDB_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "fabvdb_version.h"
+
+#if defined(_WIN32)
+#define FABVDB_API __declspec(dllexport)
+#else
+#define FABVDB_API __attribute__((visibility("default")))
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------------- */
+/* Status codes. Numbered explicitly; never renumbered. (since 0.1)          */
+/* ------------------------------------------------------------------------- */
+typedef enum fabvdb_status {
+    FABVDB_OK = 0,
+    /* A parameter is out of its documented range, or a handle is NULL. */
+    FABVDB_ERR_INVALID_ARGUMENT = 1,
+    /* A file could not be opened, read, written or renamed. */
+    FABVDB_ERR_IO = 2,
+    /* The input is malformed or cannot be processed (the message names the defect). */
+    FABVDB_ERR_BAD_INPUT = 3,
+    /* The operation would exceed the context's memory budget. */
+    FABVDB_ERR_OUT_OF_BUDGET = 4,
+    /* Memory allocation failed. */
+    FABVDB_ERR_OUT_OF_MEMORY = 5,
+    /* The progress callback or fabvdb_ctx_cancel() cancelled the call. */
+    FABVDB_ERR_CANCELLED = 6,
+    /* A bug or an unexpected library failure. */
+    FABVDB_ERR_INTERNAL = 7,
+    /* A key or item asked for does not exist (reports). */
+    FABVDB_ERR_NOT_FOUND = 8
+} fabvdb_status;
+
+/* Static English text for a status code ("ok", "bad input", ...); never NULL.
+ * Thread-safe. (since 0.1) */
+FABVDB_API const char* fabvdb_status_string(fabvdb_status status);
+
+/* ------------------------------------------------------------------------- */
+/* Version (since 0.1)                                                        */
+/* ------------------------------------------------------------------------- */
+/* The library's version as MAJOR*10000 + MINOR*100 + PATCH; compare with
+ * FABVDB_VERSION_NUMBER to detect a header/library mismatch. Thread-safe. */
+FABVDB_API int fabvdb_version_number(void);
+/* The library's version as static text "MAJOR.MINOR.PATCH". Thread-safe. */
+FABVDB_API const char* fabvdb_version_string(void);
+
+/* ------------------------------------------------------------------------- */
+/* Context (since 0.1)                                                        */
+/* ------------------------------------------------------------------------- */
+typedef struct fabvdb_ctx fabvdb_ctx;
+
+/* Progress callback: called from the thread that made the call, with the
+ * current stage's name (static text, e.g. "winding number") and the fraction
+ * of that stage done in [0, 1]. Return non-zero to cancel the call, which then
+ * returns FABVDB_ERR_CANCELLED and no result. */
+typedef int (*fabvdb_progress_fn)(void* user, const char* stage, double fraction);
+
+/* Creates a context with the defaults: all hardware threads, a memory budget
+ * of half the physical memory, no progress callback.
+ * out: receives the context, owned by the caller (free with fabvdb_ctx_free).
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (out is NULL) or
+ * FABVDB_ERR_OUT_OF_MEMORY. */
+FABVDB_API fabvdb_status fabvdb_ctx_new(fabvdb_ctx** out);
+/* Frees a context. NULL does nothing. Handles made with it stay valid. */
+FABVDB_API void fabvdb_ctx_free(fabvdb_ctx* ctx);
+
+/* Sets the number of worker threads for later calls; 0 means all hardware
+ * threads. Returns FABVDB_OK or FABVDB_ERR_INVALID_ARGUMENT (threads < 0). */
+FABVDB_API fabvdb_status fabvdb_ctx_set_threads(fabvdb_ctx* ctx, int threads);
+/* Sets the memory budget in bytes; 0 means the default (half the physical
+ * memory). Operations that can estimate their memory refuse with
+ * FABVDB_ERR_OUT_OF_BUDGET before allocating more than this. */
+FABVDB_API fabvdb_status fabvdb_ctx_set_memory_budget(fabvdb_ctx* ctx, uint64_t bytes);
+/* The memory budget in force, in bytes (the default resolved). */
+FABVDB_API uint64_t fabvdb_ctx_memory_budget(const fabvdb_ctx* ctx);
+/* Sets (or with fn NULL clears) the progress/cancel callback. */
+FABVDB_API fabvdb_status fabvdb_ctx_set_progress(fabvdb_ctx* ctx, fabvdb_progress_fn fn, void* user);
+/* Requests cancellation of the call running on ctx (or the next one started).
+ * Safe from any thread and from a signal handler. The request is cleared when
+ * the cancelled call returns. */
+FABVDB_API void fabvdb_ctx_cancel(fabvdb_ctx* ctx);
+/* The message of the last failed call on ctx ("" if none). Owned by ctx, valid
+ * until the next call on it. Never NULL (also for a NULL ctx). */
+FABVDB_API const char* fabvdb_last_error(const fabvdb_ctx* ctx);
+
+/* ------------------------------------------------------------------------- */
+/* Reports (since 0.1)                                                        */
+/* ------------------------------------------------------------------------- */
+/* A report is a JSON document holding every figure an operation computed.
+ * Geometric findings (open edges, thin walls, trapped powder) are data in a
+ * report, never errors. Keys are snake_case; lengths in mm, volumes in mm^3. */
+typedef struct fabvdb_report fabvdb_report;
+
+/* Frees a report. NULL does nothing. */
+FABVDB_API void fabvdb_report_free(fabvdb_report* report);
+/* The report as JSON text (pretty-printed). Owned by the report, valid until it
+ * is freed. Never NULL for a non-NULL report. Thread-safe for distinct reports. */
+FABVDB_API const char* fabvdb_report_json(const fabvdb_report* report);
+/* Reads a number (or boolean as 0/1) at a JSON pointer such as "/bbox/min/0".
+ * Returns FABVDB_OK, FABVDB_ERR_NOT_FOUND (no such key, or the value is null
+ * or not a number/boolean) or FABVDB_ERR_INVALID_ARGUMENT. */
+FABVDB_API fabvdb_status fabvdb_report_number(fabvdb_ctx* ctx, const fabvdb_report* report,
+                                              const char* pointer, double* out);
+/* Writes the report's JSON to path, atomically (temporary file, then rename).
+ * Returns FABVDB_OK, FABVDB_ERR_IO or FABVDB_ERR_INVALID_ARGUMENT. */
+FABVDB_API fabvdb_status fabvdb_report_write(fabvdb_ctx* ctx, const fabvdb_report* report,
+                                             const char* path);
+
+/* ------------------------------------------------------------------------- */
+/* Meshes (since 0.1)                                                         */
+/* ------------------------------------------------------------------------- */
+/* A triangle mesh: vertex positions (x, y, z doubles, millimetres) and
+ * triangles (three 0-based vertex indices). Vertices no triangle uses are kept
+ * as read. Immutable once made. */
+typedef struct fabvdb_mesh fabvdb_mesh;
+
+/* Makes a mesh from caller arrays, which are copied.
+ * vertices: 3*vertex_count doubles; triangles: 3*triangle_count indices.
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (NULL arrays with non-zero
+ * counts) or FABVDB_ERR_BAD_INPUT (an index out of range, a non-finite
+ * coordinate). */
+FABVDB_API fabvdb_status fabvdb_mesh_new(fabvdb_ctx* ctx, const double* vertices, size_t vertex_count,
+                                         const uint32_t* triangles, size_t triangle_count,
+                                         fabvdb_mesh** out);
+/* Frees a mesh. NULL does nothing. */
+FABVDB_API void fabvdb_mesh_free(fabvdb_mesh* mesh);
+
+/* Reads a mesh file. The format comes from the extension (.stl .obj .ply .off
+ * .3mf, any case); STL content is sniffed (ASCII or binary). Polygons are
+ * fan-triangulated, PLY triangle strips decoded, exactly coincident STL corners
+ * welded. Returns FABVDB_OK, FABVDB_ERR_IO (missing, unreadable, a directory),
+ * FABVDB_ERR_BAD_INPUT (unknown extension, malformed content: the message names
+ * the file and the defect) or FABVDB_ERR_CANCELLED. Reports progress. */
+FABVDB_API fabvdb_status fabvdb_mesh_read(fabvdb_ctx* ctx, const char* path, fabvdb_mesh** out);
+/* Writes a mesh; the format comes from the extension (.stl is binary; .ply is
+ * binary little-endian; .obj, .off, .3mf). Written to a temporary file in the
+ * same folder and renamed, so a failure leaves no partial file.
+ * Returns FABVDB_OK, FABVDB_ERR_IO, FABVDB_ERR_BAD_INPUT (unknown extension). */
+FABVDB_API fabvdb_status fabvdb_mesh_write(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const char* path);
+
+/* Accessors. Pointers are owned by the mesh and valid until it is freed.
+ * A NULL mesh gives 0 / NULL. Thread-safe. */
+FABVDB_API size_t fabvdb_mesh_vertex_count(const fabvdb_mesh* mesh);
+FABVDB_API size_t fabvdb_mesh_triangle_count(const fabvdb_mesh* mesh);
+/* 3*vertex_count doubles: x0 y0 z0 x1 y1 z1 ... */
+FABVDB_API const double* fabvdb_mesh_vertices(const fabvdb_mesh* mesh);
+/* 3*triangle_count indices: a0 b0 c0 a1 b1 c1 ... */
+FABVDB_API const uint32_t* fabvdb_mesh_triangles(const fabvdb_mesh* mesh);
+
+/* Inspects a mesh as a print-file checker would: counts, topology, defects.
+ * The report has (at least) vertices, triangles, components, closed,
+ * boundary_edges, boundary_loops, non_manifold_edges, non_manifold_vertices,
+ * degenerate_triangles, duplicate_triangles, self_intersecting_pairs,
+ * consistently_oriented, volume (null unless closed), genus (null unless
+ * closed and manifold), bbox {min, max}; see README "fabvdb info".
+ * out: receives the report, owned by the caller.
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT, FABVDB_ERR_CANCELLED,
+ * FABVDB_ERR_OUT_OF_MEMORY. Reports progress. */
+FABVDB_API fabvdb_status fabvdb_mesh_inspect(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, fabvdb_report** out);
+
+/* ------------------------------------------------------------------------- */
+/* Volumes (since 0.1)                                                        */
+/* ------------------------------------------------------------------------- */
+/* A solid as a sparse narrow-band signed distance field (negative inside). */
+typedef struct fabvdb_volume fabvdb_volume;
+
+/* Frees a volume. NULL does nothing. */
+FABVDB_API void fabvdb_volume_free(fabvdb_volume* volume);
+
+/* ------------------------------------------------------------------------- */
+/* Repair: robust level sets from dirty meshes (issue: fabvdb repair)         */
+/* ------------------------------------------------------------------------- */
+
+/* ------------------------------------------------------------------------- */
+/* Hollowing (fabvdb hollow)                                                  */
+/* ------------------------------------------------------------------------- */
+
+/* ------------------------------------------------------------------------- */
+/* Drainability and drain holes (fabvdb drain, fabvdb powder-sim)             */
+/* ------------------------------------------------------------------------- */
+
+/* ------------------------------------------------------------------------- */
+/* Mold decomposition (fabvdb decompose)                                      */
+/* ------------------------------------------------------------------------- */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FABVDB_H */

@@ -1,0 +1,53 @@
+//! C API: reports (JSON documents) — text, number look-up, atomic write.
+#include "api/guard.h"
+#include "core/atomic_output.h"
+
+namespace fabvdb::api {
+
+fabvdb_report* new_report_handle(nlohmann::json document) {
+    auto* report = new fabvdb_report();
+    report->document = std::move(document);
+    report->text = report->document.dump(2) + "\n";
+    return report;
+}
+
+}  // namespace fabvdb::api
+
+extern "C" {
+
+void fabvdb_report_free(fabvdb_report* report) { delete report; }
+
+const char* fabvdb_report_json(const fabvdb_report* report) { return report ? report->text.c_str() : nullptr; }
+
+fabvdb_status fabvdb_report_number(fabvdb_ctx* ctx, const fabvdb_report* report, const char* pointer, double* out) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(report, "report");
+        fabvdb::api::require(pointer, "pointer");
+        fabvdb::api::require(out, "out");
+        nlohmann::json::json_pointer where;
+        try {
+            where = nlohmann::json::json_pointer(pointer);
+        } catch (const nlohmann::json::exception&) {
+            throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, std::string("not a JSON pointer: ") + pointer);
+        }
+        if (!report->document.contains(where))
+            throw fabvdb::Error(FABVDB_ERR_NOT_FOUND, std::string("no value at ") + pointer);
+        const nlohmann::json& value = report->document.at(where);
+        if (value.is_boolean())
+            *out = value.get<bool>() ? 1.0 : 0.0;
+        else if (value.is_number())
+            *out = value.get<double>();
+        else
+            throw fabvdb::Error(FABVDB_ERR_NOT_FOUND, std::string("the value at ") + pointer + " is not a number");
+    });
+}
+
+fabvdb_status fabvdb_report_write(fabvdb_ctx* ctx, const fabvdb_report* report, const char* path) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(report, "report");
+        fabvdb::api::require(path, "path");
+        fabvdb::write_text_file_atomically(path, report->text);
+    });
+}
+
+}  // extern "C"

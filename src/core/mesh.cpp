@@ -1,0 +1,52 @@
+//! Bounding box and validation of the plain mesh type.
+#include "core/mesh.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+
+namespace fabvdb {
+
+double BoundingBox::diagonal() const {
+    const double dx = max[0] - min[0], dy = max[1] - min[1], dz = max[2] - min[2];
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+BoundingBox bounding_box(const Mesh& mesh, bool referenced_only) {
+    BoundingBox box;
+    const double inf = std::numeric_limits<double>::infinity();
+    box.min = {inf, inf, inf};
+    box.max = {-inf, -inf, -inf};
+    auto add = [&box](const Vec3& p) {
+        for (int k = 0; k < 3; ++k) {
+            box.min[k] = std::min(box.min[k], p[k]);
+            box.max[k] = std::max(box.max[k], p[k]);
+        }
+    };
+    if (referenced_only) {
+        for (const Triangle& t : mesh.triangles)
+            for (uint32_t v : t) add(mesh.vertices[v]);
+    } else {
+        for (const Vec3& p : mesh.vertices) add(p);
+    }
+    if (box.min[0] > box.max[0]) return BoundingBox{};
+    return box;
+}
+
+void validate_mesh(const Mesh& mesh, const std::string& what) {
+    for (size_t i = 0; i < mesh.vertices.size(); ++i)
+        for (double c : mesh.vertices[i])
+            if (!std::isfinite(c))
+                throw Error(FABVDB_ERR_BAD_INPUT,
+                            what + ": vertex " + std::to_string(i + 1) + " has a non-finite coordinate");
+    const size_t n = mesh.vertices.size();
+    for (size_t i = 0; i < mesh.triangles.size(); ++i)
+        for (uint32_t v : mesh.triangles[i])
+            if (v >= n)
+                throw Error(FABVDB_ERR_BAD_INPUT, what + ": triangle " + std::to_string(i + 1) +
+                                                      " uses vertex index " + std::to_string(v) + " but there are " +
+                                                      std::to_string(n) + " vertices");
+}
+
+}  // namespace fabvdb

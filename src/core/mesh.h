@@ -1,0 +1,36 @@
+//! The triangle mesh every module passes around: vertex positions in
+//! millimetres and triangles as three 0-based vertex indices. A plain value
+//! type with no invariants beyond what `validate_mesh` checks; vertices that no
+//! triangle uses are allowed (readers keep them, as a file stores them).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fabvdb {
+
+using Vec3 = std::array<double, 3>;
+using Triangle = std::array<uint32_t, 3>;
+
+struct Mesh {
+    std::vector<Vec3> vertices;
+    std::vector<Triangle> triangles;
+};
+
+struct BoundingBox {
+    Vec3 min{0, 0, 0};
+    Vec3 max{0, 0, 0};
+    double diagonal() const;
+};
+
+//! Bounding box of the vertices that triangles use (all vertices if
+//! `referenced_only` is false). Empty input gives a zero box.
+BoundingBox bounding_box(const Mesh& mesh, bool referenced_only = true);
+
+//! Throws Error(FABVDB_ERR_BAD_INPUT) naming `what` (usually the file) and the
+//! defect when a coordinate is not finite or an index is out of range.
+void validate_mesh(const Mesh& mesh, const std::string& what);
+
+}  // namespace fabvdb

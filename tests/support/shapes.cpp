@@ -1,0 +1,115 @@
+//! Synthetic test shapes: boxes, icospheres, tori.
+#include "support/shapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace fabvdb::test {
+
+Mesh make_box(const Vec3& lo, const Vec3& hi) {
+    Mesh mesh;
+    for (int i = 0; i < 8; ++i)
+        mesh.vertices.push_back({(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1], (i & 4) ? hi[2] : lo[2]});
+    // Faces as quads (outward), each split in two triangles.
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        mesh.triangles.push_back({uint32_t(q[0]), uint32_t(q[1]), uint32_t(q[2])});
+        mesh.triangles.push_back({uint32_t(q[0]), uint32_t(q[2]), uint32_t(q[3])});
+    }
+    return mesh;
+}
+
+Mesh make_sphere(const Vec3& center, double radius, int levels) {
+    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+    std::vector<Vec3> unit = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<Triangle> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                   {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    auto normalize = [](Vec3 p) {
+        const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        return Vec3{p[0] / n, p[1] / n, p[2] / n};
+    };
+    for (auto& p : unit) p = normalize(p);
+    for (int level = 0; level < levels; ++level) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoint;
+        auto mid = [&](uint32_t a, uint32_t b) {
+            auto key = std::minmax(a, b);
+            auto found = midpoint.find(key);
+            if (found != midpoint.end()) return found->second;
+            const Vec3& p = unit[a];
+            const Vec3& q = unit[b];
+            unit.push_back(normalize({p[0] + q[0], p[1] + q[1], p[2] + q[2]}));
+            return midpoint[key] = uint32_t(unit.size() - 1);
+        };
+        std::vector<Triangle> finer;
+        for (const Triangle& f : faces) {
+            const uint32_t a = mid(f[0], f[1]);
+            const uint32_t b = mid(f[1], f[2]);
+            const uint32_t c = mid(f[2], f[0]);
+            finer.push_back({f[0], a, c});
+            finer.push_back({f[1], b, a});
+            finer.push_back({f[2], c, b});
+            finer.push_back({a, b, c});
+        }
+        faces = std::move(finer);
+    }
+    Mesh mesh;
+    for (const Vec3& p : unit)
+        mesh.vertices.push_back({center[0] + radius * p[0], center[1] + radius * p[1], center[2] + radius * p[2]});
+    mesh.triangles = std::move(faces);
+    return mesh;
+}
+
+Mesh make_torus(const Vec3& center, double major, double minor, int segments_major, int segments_minor) {
+    Mesh mesh;
+    for (int i = 0; i < segments_major; ++i) {
+        const double u = 2 * M_PI * i / segments_major;
+        for (int j = 0; j < segments_minor; ++j) {
+            const double v = 2 * M_PI * j / segments_minor;
+            const double r = major + minor * std::cos(v);
+            mesh.vertices.push_back(
+                {center[0] + r * std::cos(u), center[1] + r * std::sin(u), center[2] + minor * std::sin(v)});
+        }
+    }
+    auto index = [&](int i, int j) {
+        return uint32_t((i % segments_major) * segments_minor + (j % segments_minor));
+    };
+    for (int i = 0; i < segments_major; ++i)
+        for (int j = 0; j < segments_minor; ++j) {
+            const uint32_t a = index(i, j), b = index(i + 1, j), c = index(i + 1, j + 1), d = index(i, j + 1);
+            mesh.triangles.push_back({a, b, c});
+            mesh.triangles.push_back({a, c, d});
+        }
+    return mesh;
+}
+
+Mesh flipped(Mesh mesh) {
+    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+    return mesh;
+}
+
+Mesh merged(const Mesh& a, const Mesh& b) {
+    Mesh out = a;
+    const uint32_t offset = uint32_t(a.vertices.size());
+    out.vertices.insert(out.vertices.end(), b.vertices.begin(), b.vertices.end());
+    for (Triangle t : b.triangles) out.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    return out;
+}
+
+double mesh_volume(const Mesh& mesh) {
+    double six_volume = 0;
+    for (const Triangle& t : mesh.triangles) {
+        const Vec3& a = mesh.vertices[t[0]];
+        const Vec3& b = mesh.vertices[t[1]];
+        const Vec3& c = mesh.vertices[t[2]];
+        six_volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                      a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+    return six_volume / 6.0;
+}
+
+}  // namespace fabvdb::test

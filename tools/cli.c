@@ -1,0 +1,359 @@
+/* cli.c — option parsing from the per-command tables, value units, help text,
+ * the progress bar (stderr, only on a terminal), Ctrl-C as cancellation, and
+ * the mapping of statuses to exit codes. */
+#include "cli.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+const cli_option cli_common_options[] = {
+    {"--help", 'h', CLI_FLAG, NULL, NULL, "show this help and exit"},
+    {"--quiet", 'q', CLI_FLAG, NULL, NULL, "no progress bar and no notes on stderr (errors are still printed)"},
+    {"--threads", 0, CLI_INT, "N", "0", "worker threads; 0 uses every core"},
+    {"--max-memory", 0, CLI_SIZE, "SIZE", NULL,
+     "memory budget, e.g. 8G or 512M (default: half the physical memory); work that would exceed it is refused "
+     "with exit code 3"},
+};
+const size_t cli_common_option_count = sizeof(cli_common_options) / sizeof(cli_common_options[0]);
+
+/* Options are looked up in the command's table, then in the common table;
+ * values[] holds the command's options first. */
+static const cli_option* option_at(const cli_command* command, size_t index) {
+    return index < command->option_count ? &command->options[index]
+                                         : &cli_common_options[index - command->option_count];
+}
+
+static size_t option_total(const cli_command* command) { return command->option_count + cli_common_option_count; }
+
+static int find_option(const cli_command* command, const char* name, size_t length, char short_name) {
+    for (size_t i = 0; i < option_total(command); ++i) {
+        const cli_option* option = option_at(command, i);
+        if (short_name ? option->short_name == short_name
+                       : (strlen(option->name) == length && strncmp(option->name, name, length) == 0))
+            return (int)i;
+    }
+    return -1;
+}
+
+const cli_value* cli_get(const cli_run* run, const char* name) {
+    int index = find_option(run->command, name, strlen(name), 0);
+    if (index < 0) {
+        fprintf(stderr, "fabvdb: internal error: option %s is not in the table of '%s'\n", name,
+                run->command->name);
+        abort();
+    }
+    return &run->values[index];
+}
+
+double cli_length_mm(const cli_run* run, const char* name, double diagonal) {
+    const cli_value* value = cli_get(run, name);
+    return value->relative ? value->number * diagonal : value->number;
+}
+
+/* --- values with units ---------------------------------------------------- */
+
+static int unit_is(const char* unit, const char* name) { return strcasecmp(unit, name) == 0; }
+
+int cli_parse_value(cli_option_type type, const char* text, double* number, int* relative) {
+    *relative = 0;
+    if (type == CLI_FLAG || type == CLI_STRING) return 0;
+    char* end = NULL;
+    double value = strtod(text, &end);
+    if (end == text || !isfinite(value)) return -1;
+    const char* unit = end;
+    switch (type) {
+        case CLI_NUMBER:
+            if (*unit) return -1;
+            break;
+        case CLI_INT:
+            if (*unit || value != floor(value)) return -1;
+            break;
+        case CLI_LENGTH:
+            if (!*unit || unit_is(unit, "mm")) {
+            } else if (unit_is(unit, "cm")) {
+                value *= 10.0;
+            } else if (unit_is(unit, "m")) {
+                value *= 1000.0;
+            } else if (unit_is(unit, "in")) {
+                value *= 25.4;
+            } else if (unit_is(unit, "%")) {
+                value /= 100.0;
+                *relative = 1;
+            } else {
+                return -1;
+            }
+            break;
+        case CLI_ANGLE:
+            if (!*unit || unit_is(unit, "deg")) {
+            } else if (unit_is(unit, "rad")) {
+                value *= 180.0 / M_PI;
+            } else {
+                return -1;
+            }
+            break;
+        case CLI_SIZE: {
+            double scale = 1.0;
+            if (!*unit || unit_is(unit, "B")) scale = 1.0;
+            else if (unit_is(unit, "K") || unit_is(unit, "KB") || unit_is(unit, "KiB")) scale = 1024.0;
+            else if (unit_is(unit, "M") || unit_is(unit, "MB") || unit_is(unit, "MiB")) scale = 1024.0 * 1024.0;
+            else if (unit_is(unit, "G") || unit_is(unit, "GB") || unit_is(unit, "GiB")) scale = 1024.0 * 1024.0 * 1024.0;
+            else return -1;
+            value *= scale;
+            break;
+        }
+        default:
+            return -1;
+    }
+    *number = value;
+    return 0;
+}
+
+static const char* type_hint(cli_option_type type) {
+    switch (type) {
+        case CLI_LENGTH: return "a length such as 3mm, 0.3cm, 0.1in or 2% (of the bounding-box diagonal)";
+        case CLI_ANGLE: return "an angle such as 35deg or 0.6rad";
+        case CLI_SIZE: return "a size such as 512M or 8G";
+        case CLI_INT: return "a whole number";
+        case CLI_NUMBER: return "a number";
+        default: return "a value";
+    }
+}
+
+/* --- messages and exit codes -------------------------------------------- */
+
+int cli_exit_code(fabvdb_status status) {
+    switch (status) {
+        case FABVDB_OK: return CLI_EXIT_OK;
+        case FABVDB_ERR_INVALID_ARGUMENT: return CLI_EXIT_USAGE;
+        case FABVDB_ERR_IO:
+        case FABVDB_ERR_BAD_INPUT:
+        case FABVDB_ERR_NOT_FOUND: return CLI_EXIT_BAD_INPUT;
+        case FABVDB_ERR_OUT_OF_BUDGET:
+        case FABVDB_ERR_OUT_OF_MEMORY: return CLI_EXIT_BUDGET;
+        case FABVDB_ERR_CANCELLED: return CLI_EXIT_CANCELLED;
+        case FABVDB_ERR_INTERNAL: return CLI_EXIT_INTERNAL;
+    }
+    return CLI_EXIT_INTERNAL;
+}
+
+static int progress_shown = 0;
+
+static void clear_progress_line(void) {
+    if (progress_shown) {
+        fputs("\r\033[K", stderr);
+        progress_shown = 0;
+    }
+}
+
+int cli_fail(const cli_run* run, fabvdb_status status) {
+    clear_progress_line();
+    fprintf(stderr, "fabvdb %s: %s: %s\n", run->command->name, fabvdb_status_string(status),
+            fabvdb_last_error(run->ctx));
+    return cli_exit_code(status);
+}
+
+int cli_usage_error(const cli_run* run, const char* format, ...) {
+    clear_progress_line();
+    va_list args;
+    va_start(args, format);
+    fprintf(stderr, "fabvdb %s: ", run->command->name);
+    vfprintf(stderr, format, args);
+    fprintf(stderr, "\n(see 'fabvdb help %s')\n", run->command->name);
+    va_end(args);
+    return CLI_EXIT_USAGE;
+}
+
+void cli_note(const cli_run* run, const char* format, ...) {
+    if (run->quiet) return;
+    clear_progress_line();
+    va_list args;
+    va_start(args, format);
+    vfprintf(stderr, format, args);
+    fputc('\n', stderr);
+    va_end(args);
+}
+
+/* --- progress bar and Ctrl-C -------------------------------------------- */
+
+static fabvdb_ctx* running_ctx = NULL;
+
+static void on_interrupt(int signal_number) {
+    (void)signal_number;
+    if (running_ctx) fabvdb_ctx_cancel(running_ctx);
+}
+
+static int draw_progress(void* user, const char* stage, double fraction) {
+    (void)user;
+    const int width = 30;
+    int filled = (int)(fraction * width + 0.5);
+    char bar[64];
+    for (int i = 0; i < width; ++i) bar[i] = i < filled ? '#' : '.';
+    bar[width] = 0;
+    fprintf(stderr, "\r\033[K%-24.24s [%s] %3d%%", stage, bar, (int)(fraction * 100 + 0.5));
+    fflush(stderr);
+    progress_shown = 1;
+    return 0;
+}
+
+/* --- help --------------------------------------------------------------- */
+
+static void print_option_help(FILE* out, const cli_option* option) {
+    char left[96];
+    if (option->short_name)
+        snprintf(left, sizeof left, "-%c, %s%s%s", option->short_name, option->name, option->value_name ? " " : "",
+                 option->value_name ? option->value_name : "");
+    else
+        snprintf(left, sizeof left, "    %s%s%s", option->name, option->value_name ? " " : "",
+                 option->value_name ? option->value_name : "");
+    fprintf(out, "  %-28s %s", left, option->help);
+    if (option->default_text) fprintf(out, " [default: %s]", option->default_text);
+    fputc('\n', out);
+}
+
+void cli_print_command_help(const cli_command* command) {
+    printf("Usage: fabvdb %s %s\n\n%s\n", command->name, command->usage, command->summary);
+    if (command->description && *command->description) printf("\n%s\n", command->description);
+    printf("\nOptions:\n");
+    for (size_t i = 0; i < command->option_count; ++i) print_option_help(stdout, &command->options[i]);
+    printf("\nCommon options:\n");
+    for (size_t i = 0; i < cli_common_option_count; ++i) print_option_help(stdout, &cli_common_options[i]);
+    printf("\nExit codes: 0 done, 1 usage error, 2 bad input, 3 memory budget exceeded, 4 internal error, "
+           "130 cancelled.\n");
+}
+
+static void print_markdown_option(const cli_option* option) {
+    printf("| `%s%s%s` | %s | %s |\n", option->name, option->value_name ? " " : "",
+           option->value_name ? option->value_name : "", option->help,
+           option->default_text ? option->default_text : "");
+}
+
+void cli_print_markdown(const cli_command* const* commands, size_t count) {
+    printf("| command | what it does |\n|---|---|\n");
+    for (size_t i = 0; i < count; ++i)
+        printf("| `fabvdb %s %s` | %s |\n", commands[i]->name, commands[i]->usage, commands[i]->summary);
+    for (size_t i = 0; i < count; ++i) {
+        printf("\n#### `fabvdb %s`\n\n| option | meaning | default |\n|---|---|---|\n", commands[i]->name);
+        for (size_t k = 0; k < commands[i]->option_count; ++k) print_markdown_option(&commands[i]->options[k]);
+    }
+    printf("\n#### Options of every command\n\n| option | meaning | default |\n|---|---|---|\n");
+    for (size_t k = 0; k < cli_common_option_count; ++k) print_markdown_option(&cli_common_options[k]);
+}
+
+/* --- parsing and running ------------------------------------------------ */
+
+static int set_value(cli_run* run, int index, const char* text, int given) {
+    const cli_option* option = option_at(run->command, (size_t)index);
+    cli_value* value = &run->values[index];
+    if (option->type == CLI_FLAG) {
+        value->set = value->given = 1;
+        value->number = 1;
+        return 0;
+    }
+    if (cli_parse_value(option->type, text, &value->number, &value->relative) != 0)
+        return cli_usage_error(run, "%s takes %s, not '%s'", option->name, type_hint(option->type), text);
+    value->text = text;
+    value->set = 1;
+    value->given = given;
+    return 0;
+}
+
+int cli_main(const cli_command* command, int argc, char** argv) {
+    static cli_run run;
+    memset(&run, 0, sizeof run);
+    run.command = command;
+    if (option_total(command) > CLI_MAX_OPTIONS) {
+        fprintf(stderr, "fabvdb: internal error: too many options in '%s'\n", command->name);
+        return CLI_EXIT_INTERNAL;
+    }
+    for (size_t i = 0; i < option_total(command); ++i)
+        if (option_at(command, i)->default_text && set_value(&run, (int)i, option_at(command, i)->default_text, 0))
+            return CLI_EXIT_INTERNAL;
+
+    int only_positional = 0;
+    for (int a = 1; a < argc; ++a) {
+        const char* arg = argv[a];
+        if (!only_positional && strcmp(arg, "--") == 0) {
+            only_positional = 1;
+            continue;
+        }
+        if (!only_positional && arg[0] == '-' && arg[1] != 0 && !isdigit((unsigned char)arg[1])) {
+            const char* inline_value = NULL;
+            int index;
+            if (arg[1] == '-') {
+                const char* equals = strchr(arg, '=');
+                size_t length = equals ? (size_t)(equals - arg) : strlen(arg);
+                index = find_option(command, arg, length, 0);
+                if (equals) inline_value = equals + 1;
+            } else {
+                index = arg[2] == 0 ? find_option(command, NULL, 0, arg[1]) : -1;
+            }
+            if (index < 0) return cli_usage_error(&run, "unknown option '%s'", arg);
+            const cli_option* option = option_at(command, (size_t)index);
+            if (option->type == CLI_FLAG) {
+                if (inline_value) return cli_usage_error(&run, "%s takes no value", option->name);
+                set_value(&run, index, NULL, 1);
+                continue;
+            }
+            if (!inline_value) {
+                if (a + 1 >= argc) return cli_usage_error(&run, "%s needs a value (%s)", option->name,
+                                                          option->value_name ? option->value_name : "VALUE");
+                inline_value = argv[++a];
+            }
+            if (set_value(&run, index, inline_value, 1)) return CLI_EXIT_USAGE;
+            continue;
+        }
+        if (run.positional_count >= CLI_MAX_POSITIONAL || run.positional_count >= command->positional_max)
+            return cli_usage_error(&run, "unexpected argument '%s'", arg);
+        run.positional[run.positional_count++] = arg;
+    }
+    if (cli_get(&run, "--help")->given) {
+        cli_print_command_help(command);
+        return CLI_EXIT_OK;
+    }
+    if (run.positional_count < command->positional_min)
+        return cli_usage_error(&run, "missing %s (usage: fabvdb %s %s)",
+                               run.positional_count == 0 ? "input file" : "argument", command->name, command->usage);
+    run.quiet = cli_get(&run, "--quiet")->given;
+
+    fabvdb_status status = fabvdb_ctx_new(&run.ctx);
+    if (status != FABVDB_OK) {
+        fprintf(stderr, "fabvdb %s: %s\n", command->name, fabvdb_status_string(status));
+        return cli_exit_code(status);
+    }
+    const cli_value* threads = cli_get(&run, "--threads");
+    if (threads->number < 0) {
+        fabvdb_ctx_free(run.ctx);
+        return cli_usage_error(&run, "--threads must be 0 or more");
+    }
+    fabvdb_ctx_set_threads(run.ctx, (int)threads->number);
+    const cli_value* memory = cli_get(&run, "--max-memory");
+    if (memory->set) {
+        if (memory->number < 1) {
+            fabvdb_ctx_free(run.ctx);
+            return cli_usage_error(&run, "--max-memory must be positive");
+        }
+        fabvdb_ctx_set_memory_budget(run.ctx, (uint64_t)memory->number);
+    }
+    if (!run.quiet && isatty(STDERR_FILENO)) fabvdb_ctx_set_progress(run.ctx, draw_progress, NULL);
+
+    running_ctx = run.ctx;
+    struct sigaction action;
+    memset(&action, 0, sizeof action);
+    action.sa_handler = on_interrupt;
+    sigaction(SIGINT, &action, NULL);
+    sigaction(SIGTERM, &action, NULL);
+
+    int code = command->run(&run);
+
+    clear_progress_line();
+    running_ctx = NULL;
+    fabvdb_ctx_free(run.ctx);
+    return code;
+}

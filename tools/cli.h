@@ -1,0 +1,105 @@
+/* cli.h — the command-line framework of the `fabvdb` tool: each subcommand
+ * declares its options once in a table (name, type, default, help), from which
+ * parsing, `--help` and the README's command table come. Values with units
+ * (lengths, angles, sizes) are parsed here; exit codes are mapped here, in one
+ * place (README "Exit codes"). Uses only the public header fabvdb.h. */
+#ifndef FABVDB_CLI_H
+#define FABVDB_CLI_H
+
+#include <stddef.h>
+
+#include "fabvdb.h"
+
+/* Exit codes of the `fabvdb` command. */
+enum {
+    CLI_EXIT_OK = 0,
+    CLI_EXIT_USAGE = 1,
+    CLI_EXIT_BAD_INPUT = 2,
+    CLI_EXIT_BUDGET = 3,
+    CLI_EXIT_INTERNAL = 4,
+    CLI_EXIT_CANCELLED = 130
+};
+
+typedef enum cli_option_type {
+    CLI_FLAG,   /* no value */
+    CLI_STRING, /* any text: a path, a name */
+    CLI_NUMBER, /* a plain number */
+    CLI_INT,    /* a whole number */
+    CLI_LENGTH, /* 3mm, 0.3cm, 0.1in, 2% (of the bounding-box diagonal); bare numbers are mm */
+    CLI_ANGLE,  /* 35deg, 0.6rad; bare numbers are degrees */
+    CLI_SIZE    /* bytes: 512M, 4G, 2GiB; bare numbers are bytes */
+} cli_option_type;
+
+typedef struct cli_option {
+    const char* name;       /* "--wall" */
+    char short_name;        /* 'o', or 0 */
+    cli_option_type type;
+    const char* value_name; /* "LEN", shown in help; NULL for flags */
+    const char* default_text; /* parsed as if given; NULL: unset unless given */
+    const char* help;
+} cli_option;
+
+typedef struct cli_value {
+    int given;        /* set on the command line */
+    int set;          /* given, or has a default */
+    const char* text; /* the text given (or the default text) */
+    double number;    /* the parsed value: mm, degrees, bytes, or the number */
+    int relative;     /* a length given in %: number is the fraction of the bbox diagonal */
+} cli_value;
+
+struct cli_run;
+typedef struct cli_command {
+    const char* name;
+    const char* summary;     /* one line */
+    const char* usage;       /* "INPUT -o OUTPUT [options]" */
+    const char* description; /* paragraphs for `fabvdb help NAME` */
+    const cli_option* options;
+    size_t option_count;
+    size_t positional_min, positional_max;
+    int (*run)(struct cli_run* run);
+} cli_command;
+
+#define CLI_MAX_OPTIONS 64
+#define CLI_MAX_POSITIONAL 8
+
+typedef struct cli_run {
+    const cli_command* command;
+    fabvdb_ctx* ctx;
+    cli_value values[CLI_MAX_OPTIONS];
+    const char* positional[CLI_MAX_POSITIONAL];
+    size_t positional_count;
+    int quiet;
+} cli_run;
+
+/* The options every command has (--help, --quiet, --threads, --max-memory). */
+extern const cli_option cli_common_options[];
+extern const size_t cli_common_option_count;
+
+/* The value of option `name` of the running command (aborts on a name the
+ * table does not have: a programming error). */
+const cli_value* cli_get(const cli_run* run, const char* name);
+/* A length option in mm: relative ones are resolved against `diagonal`. */
+double cli_length_mm(const cli_run* run, const char* name, double diagonal);
+
+/* Prints "fabvdb <command>: <status string>: <last error>" and returns the
+ * exit code for `status`. */
+int cli_fail(const cli_run* run, fabvdb_status status);
+/* Prints "fabvdb <command>: <message>" for a usage error and returns 1. */
+int cli_usage_error(const cli_run* run, const char* format, ...);
+/* The exit code for a status. */
+int cli_exit_code(fabvdb_status status);
+
+/* Parses the units of one value; returns 0 on success. */
+int cli_parse_value(cli_option_type type, const char* text, double* number, int* relative);
+
+/* Runs `command` with argv (argv[0] is the command name). */
+int cli_main(const cli_command* command, int argc, char** argv);
+/* Prints the help of one command to stdout. */
+void cli_print_command_help(const cli_command* command);
+/* Prints the markdown command/option tables of the README. */
+void cli_print_markdown(const cli_command* const* commands, size_t count);
+
+/* Prints a line on stderr unless quiet (for "wrote FILE" messages). */
+void cli_note(const cli_run* run, const char* format, ...);
+
+#endif

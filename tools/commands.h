@@ -1,0 +1,9 @@
+/* commands.h — the subcommands of `fabvdb`, one file each (tools/cmd_*.c). */
+#ifndef FABVDB_COMMANDS_H
+#define FABVDB_COMMANDS_H
+
+#include "cli.h"
+
+extern const cli_command cmd_info;
+
+#endif

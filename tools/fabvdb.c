@@ -1,0 +1,64 @@
+/* fabvdb.c — entry point of the `fabvdb` command: dispatches to a subcommand
+ * (tools/cmd_*.c), and answers `help`, `help COMMAND`, `--help`, `--version`. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+#include "commands.h"
+
+static const cli_command* const commands[] = {
+    &cmd_info,
+};
+static const size_t command_count = sizeof(commands) / sizeof(commands[0]);
+
+static const cli_command* find_command(const char* name) {
+    for (size_t i = 0; i < command_count; ++i)
+        if (strcmp(commands[i]->name, name) == 0) return commands[i];
+    return NULL;
+}
+
+static void print_overview(void) {
+    printf("fabvdb %s — prepares 3D models for fabrication.\n\n"
+           "Usage: fabvdb COMMAND INPUT [options]\n\nCommands:\n",
+           fabvdb_version_string());
+    for (size_t i = 0; i < command_count; ++i) printf("  %-12s %s\n", commands[i]->name, commands[i]->summary);
+    printf("\n'fabvdb help COMMAND' (or 'fabvdb COMMAND --help') explains a command and its options.\n"
+           "Lengths take units: 3mm, 0.3cm, 0.1in, or 2%% of the model's bounding-box diagonal.\n"
+           "Exit codes: 0 done, 1 usage error, 2 bad input, 3 memory budget exceeded, 4 internal error,\n"
+           "130 cancelled. Outputs appear only when complete.\n");
+}
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        print_overview();
+        return CLI_EXIT_USAGE;
+    }
+    const char* first = argv[1];
+    if (strcmp(first, "--version") == 0 || strcmp(first, "version") == 0) {
+        printf("fabvdb %s\n", fabvdb_version_string());
+        return CLI_EXIT_OK;
+    }
+    if (strcmp(first, "help") == 0 || strcmp(first, "--help") == 0 || strcmp(first, "-h") == 0) {
+        if (argc < 3) {
+            print_overview();
+            return CLI_EXIT_OK;
+        }
+        if (strcmp(argv[2], "--markdown") == 0) {
+            cli_print_markdown(commands, command_count);
+            return CLI_EXIT_OK;
+        }
+        const cli_command* command = find_command(argv[2]);
+        if (!command) {
+            fprintf(stderr, "fabvdb: no command '%s' (see 'fabvdb help')\n", argv[2]);
+            return CLI_EXIT_USAGE;
+        }
+        cli_print_command_help(command);
+        return CLI_EXIT_OK;
+    }
+    const cli_command* command = find_command(first);
+    if (!command) {
+        fprintf(stderr, "fabvdb: no command '%s' (see 'fabvdb help')\n", first);
+        return CLI_EXIT_USAGE;
+    }
+    return cli_main(command, argc - 1, argv + 1);
+}
