@@ -1,10 +1,9 @@
 //! Synthetic test shapes: boxes, icospheres, tori.
 #include "support/shapes.h"
 
-#include <algorithm>
+#include "core/icosphere.h"
+
 #include <cmath>
-#include <map>
-#include <utility>
 
 namespace fabvdb::test {
 
@@ -22,45 +21,9 @@ Mesh make_box(const Vec3& lo, const Vec3& hi) {
 }
 
 Mesh make_sphere(const Vec3& center, double radius, int levels) {
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<Vec3> unit = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    std::vector<Triangle> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                   {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    auto normalize = [](Vec3 p) {
-        const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-        return Vec3{p[0] / n, p[1] / n, p[2] / n};
-    };
-    for (auto& p : unit) p = normalize(p);
-    for (int level = 0; level < levels; ++level) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoint;
-        auto mid = [&](uint32_t a, uint32_t b) {
-            auto key = std::minmax(a, b);
-            auto found = midpoint.find(key);
-            if (found != midpoint.end()) return found->second;
-            const Vec3& p = unit[a];
-            const Vec3& q = unit[b];
-            unit.push_back(normalize({p[0] + q[0], p[1] + q[1], p[2] + q[2]}));
-            return midpoint[key] = uint32_t(unit.size() - 1);
-        };
-        std::vector<Triangle> finer;
-        for (const Triangle& f : faces) {
-            const uint32_t a = mid(f[0], f[1]);
-            const uint32_t b = mid(f[1], f[2]);
-            const uint32_t c = mid(f[2], f[0]);
-            finer.push_back({f[0], a, c});
-            finer.push_back({f[1], b, a});
-            finer.push_back({f[2], c, b});
-            finer.push_back({a, b, c});
-        }
-        faces = std::move(finer);
-    }
-    Mesh mesh;
-    for (const Vec3& p : unit)
-        mesh.vertices.push_back({center[0] + radius * p[0], center[1] + radius * p[1], center[2] + radius * p[2]});
-    mesh.triangles = std::move(faces);
+    Mesh mesh = unit_icosphere(levels);
+    for (Vec3& p : mesh.vertices)
+        p = {center[0] + radius * p[0], center[1] + radius * p[1], center[2] + radius * p[2]};
     return mesh;
 }
 
