@@ -163,6 +163,12 @@ FABVDB_API fabvdb_status fabvdb_mesh_read(fabvdb_ctx* ctx, const char* path, fab
  * Returns FABVDB_OK, FABVDB_ERR_IO, FABVDB_ERR_BAD_INPUT (unknown extension). */
 FABVDB_API fabvdb_status fabvdb_mesh_write(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const char* path);
 
+/* Makes a copy of mesh scaled uniformly by factor about the origin (files
+ * without units: a model drawn in metres is scaled by 1000).
+ * Returns FABVDB_OK or FABVDB_ERR_INVALID_ARGUMENT (factor not finite and > 0). */
+FABVDB_API fabvdb_status fabvdb_mesh_scale(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, double factor,
+                                           fabvdb_mesh** out);
+
 /* Accessors. Pointers are owned by the mesh and valid until it is freed.
  * A NULL mesh gives 0 / NULL. Thread-safe. */
 FABVDB_API size_t fabvdb_mesh_vertex_count(const fabvdb_mesh* mesh);

@@ -17,6 +17,8 @@ const cli_option cli_common_options[] = {
     {"--help", 'h', CLI_FLAG, NULL, NULL, "show this help and exit"},
     {"--quiet", 'q', CLI_FLAG, NULL, NULL, "no progress bar and no notes on stderr (errors are still printed)"},
     {"--threads", 0, CLI_INT, "N", "0", "worker threads; 0 uses every core"},
+    {"--scale", 0, CLI_NUMBER, "F", NULL, "multiply the input's coordinates by F first (a file in metres: 1000)"},
+    {"--fit", 0, CLI_LENGTH, "LEN", NULL, "scale the input uniformly first so its longest side is LEN, e.g. 100mm"},
     {"--max-memory", 0, CLI_SIZE, "SIZE", NULL,
      "memory budget, e.g. 8G or 512M (default: half the physical memory); work that would exceed it is refused "
      "with exit code 3"},
@@ -178,6 +180,58 @@ void cli_note(const cli_run* run, const char* format, ...) {
     vfprintf(stderr, format, args);
     fputc('\n', stderr);
     va_end(args);
+}
+
+/* --- input ------------------------------------------------------------- */
+
+int cli_read_input(const cli_run* run, const char* path, fabvdb_mesh** out) {
+    fabvdb_mesh* mesh = NULL;
+    fabvdb_status status = fabvdb_mesh_read(run->ctx, path, &mesh);
+    if (status != FABVDB_OK) return cli_fail(run, status);
+    const cli_value* scale = cli_get(run, "--scale");
+    const cli_value* fit = cli_get(run, "--fit");
+    double factor = 1.0;
+    if (scale->set && fit->set) {
+        fabvdb_mesh_free(mesh);
+        return cli_usage_error(run, "--scale and --fit cannot be used together");
+    }
+    if (scale->set) {
+        if (!(scale->number > 0)) {
+            fabvdb_mesh_free(mesh);
+            return cli_usage_error(run, "--scale must be positive");
+        }
+        factor = scale->number;
+    }
+    if (fit->set) {
+        const double* v = fabvdb_mesh_vertices(mesh);
+        const size_t n = fabvdb_mesh_vertex_count(mesh);
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (size_t i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) {
+                if (v[3 * i + k] < lo[k]) lo[k] = v[3 * i + k];
+                if (v[3 * i + k] > hi[k]) hi[k] = v[3 * i + k];
+            }
+        double longest = 0;
+        for (int k = 0; k < 3; ++k)
+            if (n && hi[k] - lo[k] > longest) longest = hi[k] - lo[k];
+        double diagonal = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                               (hi[2] - lo[2]) * (hi[2] - lo[2]));
+        const double target = fit->relative ? fit->number * diagonal : fit->number;
+        if (!(longest > 0) || !(target > 0)) {
+            fabvdb_mesh_free(mesh);
+            return cli_usage_error(run, "--fit needs a positive length and a model that is not flat to a point");
+        }
+        factor = target / longest;
+    }
+    if (factor != 1.0) {
+        fabvdb_mesh* scaled = NULL;
+        status = fabvdb_mesh_scale(run->ctx, mesh, factor, &scaled);
+        fabvdb_mesh_free(mesh);
+        if (status != FABVDB_OK) return cli_fail(run, status);
+        mesh = scaled;
+    }
+    *out = mesh;
+    return CLI_EXIT_OK;
 }
 
 /* --- progress bar and Ctrl-C -------------------------------------------- */

@@ -71,7 +71,7 @@ typedef struct cli_run {
     int quiet;
 } cli_run;
 
-/* The options every command has (--help, --quiet, --threads, --max-memory). */
+/* The options every command has (--help, --quiet, --scale, --fit, --threads, --max-memory). */
 extern const cli_option cli_common_options[];
 extern const size_t cli_common_option_count;
 
@@ -88,6 +88,11 @@ int cli_fail(const cli_run* run, fabvdb_status status);
 int cli_usage_error(const cli_run* run, const char* format, ...);
 /* The exit code for a status. */
 int cli_exit_code(fabvdb_status status);
+
+/* Reads the input mesh at path and applies the common --scale / --fit options.
+ * Returns CLI_EXIT_OK with *out set (the caller frees it), or the exit code
+ * after printing the error. */
+int cli_read_input(const cli_run* run, const char* path, fabvdb_mesh** out);
 
 /* Parses the units of one value; returns 0 on success. */
 int cli_parse_value(cli_option_type type, const char* text, double* number, int* relative);

@@ -26,10 +26,10 @@ static void print_yes_no(const cli_run* run, const fabvdb_report* report, const 
 static int run_info(cli_run* run) {
     const char* path = run->positional[0];
     fabvdb_mesh* mesh = NULL;
-    fabvdb_status status = fabvdb_mesh_read(run->ctx, path, &mesh);
-    if (status != FABVDB_OK) return cli_fail(run, status);
+    int code = cli_read_input(run, path, &mesh);
+    if (code != CLI_EXIT_OK) return code;
     fabvdb_report* report = NULL;
-    status = fabvdb_mesh_inspect(run->ctx, mesh, &report);
+    fabvdb_status status = fabvdb_mesh_inspect(run->ctx, mesh, &report);
     fabvdb_mesh_free(mesh);
     if (status != FABVDB_OK) return cli_fail(run, status);
 

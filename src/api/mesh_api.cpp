@@ -1,5 +1,7 @@
 //! C API: mesh handles — creation from arrays, file read/write, accessors and
 //! inspection (`fabvdb info`).
+#include <cmath>
+
 #include "api/guard.h"
 #include "io/mesh_io.h"
 #include "surface/inspect.h"
@@ -60,6 +62,19 @@ fabvdb_status fabvdb_mesh_write(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(path, "path");
         fabvdb::io::write_mesh(mesh->mesh, path);
+    });
+}
+
+fabvdb_status fabvdb_mesh_scale(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, double factor, fabvdb_mesh** out) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(mesh, "mesh");
+        fabvdb::api::require(out, "out");
+        if (!(std::isfinite(factor) && factor > 0))
+            throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "the scale factor must be a positive number");
+        fabvdb::Mesh scaled = mesh->mesh;
+        for (fabvdb::Vec3& p : scaled.vertices)
+            for (double& c : p) c *= factor;
+        *out = fabvdb::api::new_mesh_handle(std::move(scaled));
     });
 }
 

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs fabvdb's build dependencies from Debian 12's packages and builds
+# fabvdb (Release, Ninja) in build/. Safe to run again: apt-get and the build
+# are incremental. Run as root (or with sudo available).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libopenvdb-dev libboost-iostreams-dev libboost-graph-dev libboost-dev libtbb-dev
+  libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev
+  lib3mf-dev libembree-dev nlohmann-json3-dev libgtest-dev
+)
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+echo "== installing dependencies (apt-get)"
+export DEBIAN_FRONTEND=noninteractive
+as_root apt-get update -qq
+as_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+
+echo "== building fabvdb in build/"
+launcher=()
+if command -v ccache >/dev/null 2>&1; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
+cmake --build build -j 2

@@ -1,0 +1,41 @@
+# help_test.sh — the CLI skeleton: help, version, usage errors with exit 1, and
+# the README's command table generated from the option tables.
+source "$(dirname "$0")/lib.sh"
+
+expect_exit 0 "$FABVDB" --version
+expect_match "$STDOUT" '^fabvdb [0-9]\+\.[0-9]\+\.[0-9]\+'
+expect_exit 0 "$FABVDB" help
+expect_match "$STDOUT" 'info'
+expect_exit 1 "$FABVDB"
+expect_exit 0 "$FABVDB" help info
+expect_match "$STDOUT" 'Usage: fabvdb info'
+expect_match "$STDOUT" '--report'
+expect_exit 0 "$FABVDB" info --help
+expect_match "$STDOUT" 'Exit codes'
+expect_exit 1 "$FABVDB" no-such-command
+expect_match "$STDERR" "no command 'no-such-command'"
+expect_exit 1 "$FABVDB" help no-such-command
+expect_exit 1 "$FABVDB" info
+expect_match "$STDERR" 'missing input file'
+expect_exit 1 "$FABVDB" info "$MESHES/sphere.obj" --no-such-option
+expect_match "$STDERR" "unknown option '--no-such-option'"
+expect_exit 1 "$FABVDB" info "$MESHES/sphere.obj" --threads -2
+expect_exit 1 "$FABVDB" info "$MESHES/sphere.obj" --threads many
+expect_match "$STDERR" 'takes a whole number'
+expect_exit 1 "$FABVDB" info "$MESHES/sphere.obj" --max-memory 12parsecs
+expect_exit 1 "$FABVDB" info "$MESHES/sphere.obj" --report
+expect_match "$STDERR" 'needs a value'
+expect_exit 1 "$FABVDB" info "$MESHES/sphere.obj" "$MESHES/torus.obj"
+expect_match "$STDERR" 'unexpected argument'
+
+# The README's command reference is the output of `fabvdb help --markdown`.
+expect_exit 0 "$FABVDB" help --markdown
+generated="$STDOUT"
+documented="$(sed -n '/<!-- commands:begin -->/,/<!-- commands:end -->/p' "$SOURCE/README.md" | sed '1d;$d')"
+if [ "$generated" = "$documented" ]; then
+  passed=$((passed + 1))
+else
+  fail "README.md's command reference is stale: replace the part between the commands markers with 'fabvdb help --markdown'"
+  diff <(printf '%s\n' "$documented") <(printf '%s\n' "$generated") >&2 || true
+fi
+finish
