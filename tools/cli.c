@@ -1,6 +1,7 @@
 /* cli.c — option parsing from the per-command tables, value units, help text,
  * the progress bar (stderr, only on a terminal), Ctrl-C as cancellation, and
  * the mapping of statuses to exit codes. */
+#define _DEFAULT_SOURCE /* POSIX: sigaction, mkdtemp, chdir, getcwd */
 #include "cli.h"
 
 #include <ctype.h>
@@ -19,6 +20,8 @@ const cli_option cli_common_options[] = {
     {"--threads", 0, CLI_INT, "N", "0", "worker threads; 0 uses every core"},
     {"--scale", 0, CLI_NUMBER, "F", NULL, "multiply the input's coordinates by F first (a file in metres: 1000)"},
     {"--fit", 0, CLI_LENGTH, "LEN", NULL, "scale the input uniformly first so its longest side is LEN, e.g. 100mm"},
+    {"--save-job", 0, CLI_STRING, "FILE.job", NULL,
+     "also write this command line as a job file that 'fabvdb batch' replays exactly"},
     {"--max-memory", 0, CLI_SIZE, "SIZE", NULL,
      "memory budget, e.g. 8G or 512M (default: half the physical memory); work that would exceed it is refused "
      "with exit code 3"},
@@ -319,7 +322,7 @@ static int set_value(cli_run* run, int index, const char* text, int given) {
 }
 
 int cli_main(const cli_command* command, int argc, char** argv) {
-    static cli_run run;
+    cli_run run;
     memset(&run, 0, sizeof run);
     run.command = command;
     if (option_total(command) > CLI_MAX_OPTIONS) {
@@ -375,6 +378,15 @@ int cli_main(const cli_command* command, int argc, char** argv) {
         return cli_usage_error(&run, "missing %s (usage: fabvdb %s %s)",
                                run.positional_count == 0 ? "input file" : "argument", command->name, command->usage);
     run.quiet = cli_get(&run, "--quiet")->given;
+    const cli_value* save_job = cli_get(&run, "--save-job");
+    if (save_job->set) {
+        if (cli_write_job(save_job->text, command->name, argc, argv) != 0) {
+            fprintf(stderr, "fabvdb %s: input/output error: %s: cannot write the job file\n", command->name,
+                    save_job->text);
+            return CLI_EXIT_BAD_INPUT;
+        }
+        cli_note(&run, "wrote %s", save_job->text);
+    }
 
     fabvdb_status status = fabvdb_ctx_new(&run.ctx);
     if (status != FABVDB_OK) {

@@ -71,7 +71,7 @@ typedef struct cli_run {
     int quiet;
 } cli_run;
 
-/* The options every command has (--help, --quiet, --scale, --fit, --threads, --max-memory). */
+/* The options every command has (--help, --quiet, --scale, --fit, --save-job, --threads, --max-memory). */
 extern const cli_option cli_common_options[];
 extern const size_t cli_common_option_count;
 
@@ -103,6 +103,10 @@ int cli_main(const cli_command* command, int argc, char** argv);
 void cli_print_command_help(const cli_command* command);
 /* Prints the markdown command/option tables of the README. */
 void cli_print_markdown(const cli_command* const* commands, size_t count);
+
+/* Writes a job file (tools/job.c) holding one command line: `command_name`
+ * with argv[1..argc-1], less any --save-job option. Returns 0 on success. */
+int cli_write_job(const char* path, const char* command_name, int argc, char** argv);
 
 /* Prints a line on stderr unless quiet (for "wrote FILE" messages). */
 void cli_note(const cli_run* run, const char* format, ...);

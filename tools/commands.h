@@ -5,5 +5,9 @@
 #include "cli.h"
 
 extern const cli_command cmd_info;
+extern const cli_command cmd_batch;
+
+/* The command called `name`, or NULL (tools/fabvdb.c). */
+const cli_command* command_named(const char* name);
 
 #endif

@@ -8,10 +8,11 @@
 
 static const cli_command* const commands[] = {
     &cmd_info,
+    &cmd_batch,
 };
 static const size_t command_count = sizeof(commands) / sizeof(commands[0]);
 
-static const cli_command* find_command(const char* name) {
+const cli_command* command_named(const char* name) {
     for (size_t i = 0; i < command_count; ++i)
         if (strcmp(commands[i]->name, name) == 0) return commands[i];
     return NULL;
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
             cli_print_markdown(commands, command_count);
             return CLI_EXIT_OK;
         }
-        const cli_command* command = find_command(argv[2]);
+        const cli_command* command = command_named(argv[2]);
         if (!command) {
             fprintf(stderr, "fabvdb: no command '%s' (see 'fabvdb help')\n", argv[2]);
             return CLI_EXIT_USAGE;
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
         cli_print_command_help(command);
         return CLI_EXIT_OK;
     }
-    const cli_command* command = find_command(first);
+    const cli_command* command = command_named(first);
     if (!command) {
         fprintf(stderr, "fabvdb: no command '%s' (see 'fabvdb help')\n", first);
         return CLI_EXIT_USAGE;

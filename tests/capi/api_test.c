@@ -1,5 +1,6 @@
 /* api_test.c — the C API from C, through fabvdb.h only: context, statuses,
  * version, meshes in and out, errors with messages, reports, cancellation. */
+#define _DEFAULT_SOURCE /* POSIX: sigaction, mkdtemp, chdir, getcwd */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
