@@ -1,0 +1,67 @@
+//! Inspection for `fabvdb info`: gathers the topology summary (as stored and
+//! after welding), the degenerate, duplicate and self-intersecting triangles,
+//! the signed volumes and the bounding box into one JSON object.
+#include "surface/inspect.h"
+
+#include "surface/degenerate_triangles.h"
+#include "surface/duplicate_triangles.h"
+#include "surface/mesh_topology.h"
+#include "surface/self_intersections.h"
+#include "surface/signed_volume.h"
+#include "surface/weld_vertices.h"
+
+namespace fabvdb::surface {
+
+nlohmann::json inspect_mesh(const Mesh& mesh, Progress& progress) {
+    progress.stage("topology");
+    const TopologySummary topology = summarize_topology(mesh);
+    const Mesh welded = weld_coincident_vertices(mesh);
+    const TopologySummary welded_topology = summarize_topology(welded);
+    progress.update(0.5);
+    const size_t degenerate = degenerate_triangles(mesh).size();
+    const size_t duplicates = duplicate_triangles(mesh).size();
+    const std::vector<double> volumes =
+        component_signed_volumes(mesh, topology.triangle_component, topology.components);
+    progress.update(1.0);
+    const size_t intersecting = self_intersecting_pairs(mesh, progress).size();
+
+    nlohmann::json volume = nullptr;
+    size_t negative_shells = 0;
+    double total_volume = 0;
+    for (size_t c = 0; c < volumes.size(); ++c) {
+        total_volume += volumes[c];
+        if (topology.component_closed[c] && volumes[c] < 0) ++negative_shells;
+    }
+    if (topology.closed) volume = total_volume;
+    const BoundingBox box = bounding_box(mesh);
+
+    nlohmann::json report;
+    report["vertices"] = mesh.vertices.size();
+    report["triangles"] = mesh.triangles.size();
+    report["unreferenced_vertices"] = topology.unreferenced_vertices;
+    report["components"] = topology.components;
+    report["closed"] = topology.closed;
+    report["boundary_edges"] = topology.boundary_edges;
+    report["boundary_loops"] = topology.boundary_loops;
+    report["non_manifold_edges"] = topology.non_manifold_edges;
+    report["non_manifold_vertices"] = topology.non_manifold_vertices;
+    report["consistently_oriented"] = topology.inconsistent_edges == 0;
+    report["inconsistent_edges"] = topology.inconsistent_edges;
+    report["degenerate_triangles"] = degenerate;
+    report["duplicate_triangles"] = duplicates;
+    report["self_intersecting_pairs"] = intersecting;
+    report["volume"] = volume;
+    report["negative_volume_shells"] = negative_shells;
+    report["genus"] = topology.genus ? nlohmann::json(*topology.genus) : nlohmann::json(nullptr);
+    report["bbox"] = {{"min", box.min}, {"max", box.max}};
+    report["welded"] = {{"vertices", welded.vertices.size()},
+                        {"components", welded_topology.components},
+                        {"closed", welded_topology.closed},
+                        {"boundary_edges", welded_topology.boundary_edges},
+                        {"boundary_loops", welded_topology.boundary_loops},
+                        {"non_manifold_edges", welded_topology.non_manifold_edges},
+                        {"non_manifold_vertices", welded_topology.non_manifold_vertices}};
+    return report;
+}
+
+}  // namespace fabvdb::surface

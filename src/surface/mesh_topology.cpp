@@ -1,0 +1,154 @@
+//! Edge table, components and the topology summary, all by sorting and
+//! union-find on indices (linear-logarithmic in the triangle count).
+#include "surface/mesh_topology.h"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <tuple>
+
+namespace fabvdb::surface {
+namespace {
+
+constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
+
+class DisjointSets {
+public:
+    explicit DisjointSets(size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0u); }
+    uint32_t find(uint32_t x) {
+        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+        return x;
+    }
+    void unite(uint32_t a, uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+    }
+
+private:
+    std::vector<uint32_t> parent_;
+};
+
+//! Corners are numbered 3·triangle + k. Two corners at the same vertex are in
+//! the same fan when their triangles share an edge from that vertex (or are
+//! the same triangle); the vertex is non-manifold when it has several fans.
+size_t count_non_manifold_vertices(const Mesh& mesh, const EdgeTable& edges) {
+    DisjointSets fans(mesh.triangles.size() * 3);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const Triangle& tri = mesh.triangles[t];
+        for (int i = 0; i < 3; ++i)
+            for (int j = i + 1; j < 3; ++j)
+                if (tri[i] == tri[j]) fans.unite(uint32_t(3 * t + i), uint32_t(3 * t + j));
+    }
+    auto corner_at = [&](uint32_t triangle, uint32_t vertex) {
+        const Triangle& tri = mesh.triangles[triangle];
+        return uint32_t(3 * triangle + (tri[0] == vertex ? 0 : tri[1] == vertex ? 1 : 2));
+    };
+    for (size_t e = 0; e < edges.edge_count(); ++e) {
+        const EdgeUse& first = edges.uses[edges.begin[e]];
+        for (size_t u = edges.begin[e] + 1; u < edges.begin[e + 1]; ++u) {
+            const uint32_t other = edges.uses[u].triangle;
+            fans.unite(corner_at(first.triangle, first.lo), corner_at(other, first.lo));
+            fans.unite(corner_at(first.triangle, first.hi), corner_at(other, first.hi));
+        }
+    }
+    std::vector<uint32_t> fan_of_vertex(mesh.vertices.size(), none);
+    std::vector<bool> several_fans(mesh.vertices.size(), false);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = mesh.triangles[t][k];
+            const uint32_t fan = fans.find(uint32_t(3 * t + k));
+            if (fan_of_vertex[v] == none)
+                fan_of_vertex[v] = fan;
+            else if (fan_of_vertex[v] != fan)
+                several_fans[v] = true;
+        }
+    return size_t(std::count(several_fans.begin(), several_fans.end(), true));
+}
+
+size_t count_boundary_loops(const Mesh& mesh, const EdgeTable& edges) {
+    DisjointSets loops(mesh.vertices.size());
+    std::vector<bool> on_boundary(mesh.vertices.size(), false);
+    for (size_t e = 0; e < edges.edge_count(); ++e) {
+        if (edges.use_count(e) != 1) continue;
+        const EdgeUse& use = edges.uses[edges.begin[e]];
+        loops.unite(use.lo, use.hi);
+        on_boundary[use.lo] = on_boundary[use.hi] = true;
+    }
+    size_t count = 0;
+    for (uint32_t v = 0; v < mesh.vertices.size(); ++v)
+        if (on_boundary[v] && loops.find(v) == v) ++count;
+    return count;
+}
+
+}  // namespace
+
+EdgeTable build_edge_table(const Mesh& mesh) {
+    EdgeTable table;
+    table.uses.reserve(mesh.triangles.size() * 3);
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+            if (a != b) table.uses.push_back({std::min(a, b), std::max(a, b), uint32_t(t), a < b});
+        }
+    std::sort(table.uses.begin(), table.uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+        return std::tie(x.lo, x.hi, x.triangle, x.forward) < std::tie(y.lo, y.hi, y.triangle, y.forward);
+    });
+    for (size_t u = 0; u < table.uses.size(); ++u)
+        if (u == 0 || table.uses[u].lo != table.uses[u - 1].lo || table.uses[u].hi != table.uses[u - 1].hi)
+            table.begin.push_back(u);
+    table.begin.push_back(table.uses.size());
+    return table;
+}
+
+std::vector<uint32_t> triangle_components(const Mesh& mesh, size_t& component_count) {
+    DisjointSets sets(mesh.vertices.size());
+    for (const Triangle& t : mesh.triangles) {
+        sets.unite(t[0], t[1]);
+        sets.unite(t[0], t[2]);
+    }
+    std::vector<uint32_t> label_of_root(mesh.vertices.size(), none);
+    std::vector<uint32_t> component(mesh.triangles.size());
+    component_count = 0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        uint32_t& label = label_of_root[sets.find(mesh.triangles[t][0])];
+        if (label == none) label = uint32_t(component_count++);
+        component[t] = label;
+    }
+    return component;
+}
+
+TopologySummary summarize_topology(const Mesh& mesh) {
+    TopologySummary s;
+    std::vector<bool> referenced(mesh.vertices.size(), false);
+    for (const Triangle& t : mesh.triangles)
+        for (uint32_t v : t) referenced[v] = true;
+    s.referenced_vertices = size_t(std::count(referenced.begin(), referenced.end(), true));
+    s.unreferenced_vertices = mesh.vertices.size() - s.referenced_vertices;
+
+    s.triangle_component = triangle_components(mesh, s.components);
+    s.component_closed.assign(s.components, true);
+
+    const EdgeTable edges = build_edge_table(mesh);
+    s.edges = edges.edge_count();
+    for (size_t e = 0; e < edges.edge_count(); ++e) {
+        const size_t uses = edges.use_count(e);
+        const EdgeUse& first = edges.uses[edges.begin[e]];
+        if (uses == 1) ++s.boundary_edges;
+        if (uses >= 3) ++s.non_manifold_edges;
+        if (uses != 2) s.component_closed[s.triangle_component[first.triangle]] = false;
+        if (uses == 2 && first.forward == edges.uses[edges.begin[e] + 1].forward) ++s.inconsistent_edges;
+    }
+    s.boundary_loops = count_boundary_loops(mesh, edges);
+    s.non_manifold_vertices = count_non_manifold_vertices(mesh, edges);
+    s.closed = !mesh.triangles.empty() && s.boundary_edges == 0 && s.non_manifold_edges == 0;
+
+    if (s.closed && s.non_manifold_vertices == 0) {
+        const long long euler = (long long)s.referenced_vertices - (long long)s.edges + (long long)mesh.triangles.size();
+        const long long twice_genus = 2 * (long long)s.components - euler;
+        if (twice_genus % 2 == 0) s.genus = twice_genus / 2;
+    }
+    return s;
+}
+
+}  // namespace fabvdb::surface
