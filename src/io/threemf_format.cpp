@@ -71,6 +71,13 @@ double millimetres_per_unit(DWORD unit) {
     }
 }
 
+std::string last_error(PLib3MFBase* instance) {
+    DWORD code = 0;
+    LPCSTR message = nullptr;
+    if (instance && lib3mf_getlasterror(instance, &code, &message) == LIB3MF_OK && message && *message) return message;
+    return "lib3mf error " + std::to_string(code);
+}
+
 class ModelReader {
 public:
     ModelReader(std::string path, Progress& progress) : path_(std::move(path)), progress_(progress) {}
@@ -109,14 +116,6 @@ public:
     }
 
 private:
-    static std::string last_error(PLib3MFBase* instance) {
-        DWORD code = 0;
-        LPCSTR message = nullptr;
-        if (instance && lib3mf_getlasterror(instance, &code, &message) == LIB3MF_OK && message && *message)
-            return message;
-        return "lib3mf error " + std::to_string(code);
-    }
-
     void check(LIB3MFRESULT result, PLib3MFBase* instance, const char* what) const {
         if (result != LIB3MF_OK) throw Error(FABVDB_ERR_BAD_INPUT, path_ + ": " + what + ": " + last_error(instance));
     }
@@ -192,30 +191,34 @@ private:
 Mesh read_3mf(const std::string& path, Progress& progress) { return ModelReader(path, progress).read(); }
 
 void write_3mf(const Mesh& mesh, const std::string& path) {
+    if (mesh.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, path + ": a 3MF mesh needs triangles");
     if (mesh.vertices.size() > UINT32_MAX || mesh.triangles.size() > UINT32_MAX)
         throw Error(FABVDB_ERR_BAD_INPUT, path + ": too large for a 3MF mesh object");
-    auto fail = [&path](const char* what) { throw Error(FABVDB_ERR_IO, path + ": " + what); };
+    auto check = [&path](LIB3MFRESULT result, PLib3MFBase* instance, const char* what) {
+        if (result != LIB3MF_OK) throw Error(FABVDB_ERR_IO, path + ": " + what + ": " + last_error(instance));
+    };
     Handle model;
     Handle object;
     Handle item;
     Handle writer;
-    if (lib3mf_createmodel(model.out()) != LIB3MF_OK) fail("lib3mf could not create a model");
-    if (lib3mf_model_setunit(model.get(), MODELUNIT_MILLIMETER) != LIB3MF_OK) fail("cannot set the unit");
-    if (lib3mf_model_addmeshobject(model.get(), object.out()) != LIB3MF_OK) fail("cannot add a mesh object");
+    if (lib3mf_createmodel(model.out()) != LIB3MF_OK)
+        throw Error(FABVDB_ERR_INTERNAL, path + ": lib3mf could not create a model");
+    check(lib3mf_model_setunit(model.get(), MODELUNIT_MILLIMETER), model.get(), "cannot set the unit");
+    check(lib3mf_model_addmeshobject(model.get(), object.out()), model.get(), "cannot add a mesh object");
     std::vector<MODELMESHVERTEX> vertices(mesh.vertices.size());
     for (size_t i = 0; i < vertices.size(); ++i)
         for (int k = 0; k < 3; ++k) vertices[i].m_fPosition[k] = static_cast<FLOAT>(mesh.vertices[i][k]);
     std::vector<MODELMESHTRIANGLE> triangles(mesh.triangles.size());
     for (size_t i = 0; i < triangles.size(); ++i)
         for (int k = 0; k < 3; ++k) triangles[i].m_nIndices[k] = mesh.triangles[i][k];
-    if (lib3mf_meshobject_setgeometry(object.get(), vertices.data(), static_cast<DWORD>(vertices.size()),
-                                      triangles.data(), static_cast<DWORD>(triangles.size())) != LIB3MF_OK)
-        fail("lib3mf rejected the mesh");
-    if (lib3mf_model_addbuilditem(model.get(), object.get(), nullptr, item.out()) != LIB3MF_OK)
-        fail("cannot add a build item");
-    if (lib3mf_model_querywriter(model.get(), "3mf", writer.out()) != LIB3MF_OK) fail("cannot create a 3MF writer");
+    check(lib3mf_meshobject_setgeometry(object.get(), vertices.data(), static_cast<DWORD>(vertices.size()),
+                                        triangles.data(), static_cast<DWORD>(triangles.size())),
+          object.get(), "lib3mf rejected the mesh");
+    check(lib3mf_model_addbuilditem(model.get(), object.get(), nullptr, item.out()), model.get(),
+          "cannot add a build item");
+    check(lib3mf_model_querywriter(model.get(), "3mf", writer.out()), model.get(), "cannot create a 3MF writer");
     AtomicOutput output(path);
-    if (lib3mf_writer_writetofileutf8(writer.get(), output.temp_path().c_str()) != LIB3MF_OK) fail("write failed");
+    check(lib3mf_writer_writetofileutf8(writer.get(), output.temp_path().c_str()), writer.get(), "write failed");
     output.commit();
 }
 

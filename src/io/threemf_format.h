@@ -4,9 +4,9 @@
 //! each mesh object instance keeps its own vertices. A file that is not a valid
 //! 3MF package (not a zip, no model part, malformed XML) is
 //! Error(FABVDB_ERR_BAD_INPUT) with lib3mf's reason. Writing produces one mesh
-//! object in millimetres with one build item; lib3mf 1.8 stores coordinates in
-//! single precision printed with six decimals, so they come back within about
-//! 1e-6 mm (plus single-precision rounding).
+//! object (at least one triangle) in millimetres with one build item; lib3mf
+//! 1.8 stores coordinates in single precision printed with six decimals, so
+//! they come back within about 1e-6 mm (plus single-precision rounding).
 #pragma once
 
 #include <string>

@@ -1,14 +1,18 @@
 // Reading every shared test mesh gives the vertex and triangle counts of the
-// table in its README; format dispatch by extension.
+// table in its README; format dispatch by extension; the bad inputs every
+// format must reject cleanly; progress and cancellation while reading.
 #include "io/mesh_io.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
 #include "core/error.h"
+#include "io/io_test_files.h"
 
 namespace {
 
@@ -81,4 +85,102 @@ TEST(MeshIo, UnknownExtensionListsTheKnownOnes) {
             EXPECT_NE(message.find(".stl, .obj, .ply, .off, .3mf"), std::string::npos) << message;
         }
     }
+}
+
+namespace {
+
+const char* const extensions[] = {"stl", "obj", "ply", "off", "3mf"};
+
+}  // namespace
+
+TEST(MeshIoBadInput, EmptyFileOfEveryFormat) {
+    fabvdb::test::TempDir dir;
+    for (const char* extension : extensions)
+        fabvdb::test::expect_read_error(fabvdb::test::write_bytes(dir.file(std::string("empty.") + extension), ""),
+                                        FABVDB_ERR_BAD_INPUT, "empty file");
+}
+
+TEST(MeshIoBadInput, MissingPathAndDirectoryAreIoErrors) {
+    fabvdb::test::TempDir dir;
+    for (const char* extension : extensions) {
+        fabvdb::test::expect_read_error(dir.file(std::string("missing.") + extension), FABVDB_ERR_IO,
+                                        "No such file");
+        const std::string folder = dir.file(std::string("folder.") + extension);
+        std::filesystem::create_directory(folder);
+        fabvdb::test::expect_read_error(folder, FABVDB_ERR_IO, "is a directory");
+    }
+}
+
+TEST(MeshIoBadInput, ZeroTrianglesInEveryFormat) {
+    fabvdb::test::TempDir dir;
+    using fabvdb::test::write_bytes;
+    const std::string no_triangles = "no triangles";
+    fabvdb::test::expect_read_error(write_bytes(dir.file("points.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+                                    FABVDB_ERR_BAD_INPUT, no_triangles);
+    fabvdb::test::expect_read_error(write_bytes(dir.file("points.off"), "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
+                                    FABVDB_ERR_BAD_INPUT, no_triangles);
+    fabvdb::test::expect_read_error(
+        write_bytes(dir.file("points.ply"), "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                            "property float y\nproperty float z\nend_header\n0 0 0\n"),
+        FABVDB_ERR_BAD_INPUT, no_triangles);
+    fabvdb::test::expect_read_error(write_bytes(dir.file("nothing.stl"), "solid empty\nendsolid empty\n"),
+                                    FABVDB_ERR_BAD_INPUT, no_triangles);
+    fabvdb::test::expect_read_error(FABVDB_TEST_DATA_DIR "/io/no_triangles.3mf", FABVDB_ERR_BAD_INPUT, no_triangles);
+}
+
+TEST(MeshIoBadInput, NonFiniteCoordinatesInEveryTextFormat) {
+    fabvdb::test::TempDir dir;
+    using fabvdb::test::write_bytes;
+    const std::string defect = "vertex 2 has a non-finite coordinate";
+    fabvdb::test::expect_read_error(write_bytes(dir.file("nan.obj"), "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"),
+                                    FABVDB_ERR_BAD_INPUT, defect);
+    fabvdb::test::expect_read_error(
+        write_bytes(dir.file("inf.off"), "OFF\n3 1 0\n0 0 0\n1 -inf 0\n0 1 0\n3 0 1 2\n"), FABVDB_ERR_BAD_INPUT,
+        defect);
+    fabvdb::test::expect_read_error(
+        write_bytes(dir.file("inf.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                         "property float y\nproperty float z\nelement face 1\n"
+                                         "property list uchar int vertex_indices\nend_header\n"
+                                         "0 0 0\n1 0 inf\n0 1 0\n3 0 1 2\n"),
+        FABVDB_ERR_BAD_INPUT, defect);
+    fabvdb::test::expect_read_error(write_bytes(dir.file("huge.obj"), "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"),
+                                    FABVDB_ERR_BAD_INPUT, "line 2: vertex coordinate '1e999' is out of range");
+}
+
+TEST(MeshIoBadInput, NothingIsWrittenForAnInvalidMesh) {
+    fabvdb::test::TempDir dir;
+    fabvdb::Mesh mesh;
+    mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.triangles = {{0, 1, 3}};
+    for (const char* extension : extensions) {
+        const std::string path = dir.file(std::string("bad.") + extension);
+        EXPECT_THROW(fabvdb::io::write_mesh(mesh, path), fabvdb::Error);
+        EXPECT_FALSE(std::filesystem::exists(path)) << path;
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+namespace {
+
+int cancel_at_half(void* user, const char*, double fraction) {
+    auto* fractions = static_cast<std::vector<double>*>(user);
+    fractions->push_back(fraction);
+    return fraction >= 0.5;
+}
+
+}  // namespace
+
+TEST(MeshIo, ReadingReportsProgressAndCanBeCancelled) {
+    std::vector<double> fractions;
+    fabvdb::Progress progress(cancel_at_half, &fractions, nullptr);
+    try {
+        fabvdb::io::read_mesh(FABVDB_SHARED_DATA "/meshes/armadillo_86k.obj", progress);
+        ADD_FAILURE() << "the read was not cancelled";
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED) << e.what();
+    }
+    ASSERT_GE(fractions.size(), 3u);
+    EXPECT_GE(fractions.back(), 0.5);
+    EXPECT_LT(fractions.back(), 1.0);
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
 }
