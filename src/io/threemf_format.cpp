@@ -37,7 +37,6 @@ private:
 //! Row-major 3x4 affine map: p' = A p + t, as lib3mf's MODELTRANSFORM stores it.
 using Affine = std::array<std::array<double, 4>, 3>;
 
-constexpr Affine identity_affine{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
 constexpr int max_component_depth = 32;
 
 Affine to_affine(const MODELTRANSFORM& transform) {
