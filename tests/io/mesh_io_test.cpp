@@ -184,3 +184,31 @@ TEST(MeshIo, ReadingReportsProgressAndCanBeCancelled) {
     EXPECT_LT(fractions.back(), 1.0);
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
 }
+
+TEST(MeshIoBadInput, EveryTruncationOfAValidFileIsReadOrCleanlyRejected) {
+    fabvdb::test::TempDir dir;
+    const std::string sources[] = {FABVDB_SHARED_DATA "/meshes/multibody.stl",
+                                   FABVDB_SHARED_DATA "/meshes/cube_with_fold.ply",
+                                   FABVDB_SHARED_DATA "/meshes/bunny_trimesh_broken.ply",
+                                   FABVDB_SHARED_DATA "/meshes/quads_to_stitch.off",
+                                   FABVDB_SHARED_DATA "/meshes/wallhole.obj",
+                                   FABVDB_TEST_DATA_DIR "/io/transformed_components.3mf"};
+    for (const std::string& source : sources) {
+        std::ifstream in(source, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        ASSERT_FALSE(bytes.empty()) << source;
+        const std::string path = dir.file("cut" + source.substr(source.rfind('.')));
+        int rejected = 0;
+        for (size_t step = 0; step < 64; ++step) {
+            const size_t length = bytes.size() * step / 64;
+            fabvdb::test::write_bytes(path, bytes.substr(0, length));
+            try {
+                fabvdb::test::read(path);
+            } catch (const fabvdb::Error& e) {
+                EXPECT_EQ(e.status(), FABVDB_ERR_BAD_INPUT) << source << " cut at " << length << ": " << e.what();
+                ++rejected;
+            }
+        }
+        EXPECT_GT(rejected, 0) << source;
+    }
+}
