@@ -6,8 +6,7 @@
 namespace fabvdb::io {
 
 void BinaryReader::fail_truncated(const char* what) const {
-    throw Error(FABVDB_ERR_BAD_INPUT, path_ + ": truncated: the file ends at byte " + std::to_string(bytes_.size()) +
-                                          " while reading " + what);
+    throw Error(FABVDB_ERR_BAD_INPUT, path_ + ": truncated: the file ends while reading " + what);
 }
 
 }  // namespace fabvdb::io

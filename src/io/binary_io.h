@@ -49,7 +49,7 @@ public:
     size_t remaining() const { return bytes_.size() - pos_; }
     size_t size() const { return bytes_.size(); }
 
-    //! Throws Error(BAD_INPUT) "<path>: truncated: the file ends at byte N while reading <what>".
+    //! Throws Error(BAD_INPUT) "<path>: truncated: the file ends while reading <what>".
     [[noreturn]] void fail_truncated(const char* what) const;
 
 private:

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "core/error.h"
 #include "io/input_file.h"
 #include "io/output_file.h"
 #include "io/polygon_fan.h"
@@ -30,6 +31,9 @@ Mesh read_obj(const std::string& path, Progress& progress) {
     TextScanner scanner(bytes, path, TextSyntax{true, true}, progress);
     Mesh mesh;
     std::vector<uint32_t> corners;
+    // Faces may name vertices defined further down; the largest index is checked at the end.
+    uint32_t largest_index = 0;
+    size_t largest_index_line = 0;
     std::string_view token;
     while (!scanner.at_end()) {
         if (scanner.token_in_line(token)) {
@@ -42,11 +46,21 @@ Mesh read_obj(const std::string& path, Progress& progress) {
                 corners.clear();
                 while (scanner.token_in_line(token)) corners.push_back(corner_index(scanner, token, mesh.vertices.size()));
                 if (corners.size() < 3) scanner.fail("a face with " + std::to_string(corners.size()) + " vertices");
+                for (uint32_t corner : corners)
+                    if (corner >= largest_index) {
+                        largest_index = corner;
+                        largest_index_line = scanner.line();
+                    }
                 add_polygon_fan(mesh, corners.data(), corners.size());
             }
         }
         scanner.next_line();
     }
+    if (!mesh.triangles.empty() && largest_index >= mesh.vertices.size())
+        throw Error(FABVDB_ERR_BAD_INPUT, path + ": line " + std::to_string(largest_index_line) +
+                                              ": face vertex index " + std::to_string(largest_index + 1) +
+                                              " is out of range (the file has " +
+                                              std::to_string(mesh.vertices.size()) + " vertices)");
     return mesh;
 }
 

@@ -35,6 +35,7 @@ public:
     bool skip_blank_lines();
     bool at_end() const { return pos_ >= text_.size(); }
     size_t position() const { return pos_; }
+    size_t line() const { return line_; }
 
     //! The next token (across lines) that must exist; `what` names it in the error.
     std::string_view expect_token(const char* what);

@@ -59,8 +59,10 @@ TEST(ObjFormat, BadIndicesAreRejectedWithTheLine) {
                       FABVDB_ERR_BAD_INPUT, "line 4: face vertex index 0");
     expect_read_error(write_bytes(dir.file("before.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n"),
                       FABVDB_ERR_BAD_INPUT, "face vertex index -4 is out of range");
-    expect_read_error(write_bytes(dir.file("after.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"),
-                      FABVDB_ERR_BAD_INPUT, "uses vertex index 3 but there are 3 vertices");
+    expect_read_error(write_bytes(dir.file("after.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\nf 3 2 1\n"),
+                      FABVDB_ERR_BAD_INPUT, "line 4: face vertex index 4 is out of range (the file has 3 vertices)");
+    const Mesh forward = read(write_bytes(dir.file("forward.obj"), "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"));
+    EXPECT_EQ(forward.triangles, (std::vector<Triangle>{{0, 1, 2}}));
     expect_read_error(write_bytes(dir.file("two.obj"), "v 0 0 0\nv 1 0 0\nf 1 2\n"), FABVDB_ERR_BAD_INPUT,
                       "a face with 2 vertices");
     expect_read_error(write_bytes(dir.file("word.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 two 3\n"),

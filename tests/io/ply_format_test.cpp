@@ -130,7 +130,7 @@ TEST(PlyFormat, HeaderCountsLargerThanTheFileAreRejectedWithoutAllocating) {
                                "property float x\nproperty float y\nproperty float z\n"
                                "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     expect_read_error(write_bytes(dir.file("huge.ply"), header + std::string(24, '\0')), FABVDB_ERR_BAD_INPUT,
-                      "truncated");
+                      "truncated: the file ends while reading a property value");
     const std::string list = "ply\nformat binary_little_endian 1.0\nelement vertex 0\n"
                              "property float x\nproperty float y\nproperty float z\n"
                              "element face 1\nproperty list uint int vertex_indices\nend_header\n";
