@@ -59,10 +59,19 @@ private:
     size_t pos_ = 0;
 };
 
+//! Stores `value` little-endian at `at`; returns the byte after it.
+template <typename T>
+char* store_little_endian(char* at, T value) {
+    if (host_is_big_endian) value = reverse_bytes(value);
+    std::memcpy(at, &value, sizeof(T));
+    return at + sizeof(T);
+}
+
 template <typename T>
 void write_little_endian(std::ostream& out, T value) {
-    if (host_is_big_endian) value = reverse_bytes(value);
-    out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+    char bytes[sizeof(T)];
+    store_little_endian(bytes, value);
+    out.write(bytes, sizeof(T));
 }
 
 }  // namespace fabvdb::io

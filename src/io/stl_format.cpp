@@ -174,6 +174,7 @@ void write_stl(const Mesh& mesh, const std::string& path) {
         header.resize(header_bytes, ' ');
         out.write(header.data(), static_cast<std::streamsize>(header.size()));
         write_little_endian<uint32_t>(out, static_cast<uint32_t>(mesh.triangles.size()));
+        char facet[facet_bytes];
         for (const Triangle& t : mesh.triangles) {
             const Vec3& a = mesh.vertices[t[0]];
             const Vec3& b = mesh.vertices[t[1]];
@@ -183,10 +184,12 @@ void write_stl(const Mesh& mesh, const std::string& path) {
             double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
             const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             for (double& x : n) x = length > 0 ? x / length : 0.0;
-            for (double x : n) write_little_endian<float>(out, static_cast<float>(x));
+            char* at = facet;
+            for (double x : n) at = store_little_endian<float>(at, static_cast<float>(x));
             for (uint32_t corner : t)
-                for (double x : mesh.vertices[corner]) write_little_endian<float>(out, static_cast<float>(x));
-            write_little_endian<uint16_t>(out, 0);
+                for (double x : mesh.vertices[corner]) at = store_little_endian<float>(at, static_cast<float>(x));
+            store_little_endian<uint16_t>(at, 0);
+            out.write(facet, facet_bytes);
         }
     });
 }
