@@ -195,8 +195,8 @@ public:
         for (const Element& element : elements) {
             if (element.properties.empty()) continue;
             if (element.name == "vertex") read_vertices(element, source);
-            else if (element.name == "face") read_polygons(element, source, {"vertex_indices", "vertex_index"}, false);
-            else if (element.name == "tristrips") read_polygons(element, source, {"vertex_indices", "vertex_index"}, true);
+            else if (element.name == "face") read_polygons(element, source, false);
+            else if (element.name == "tristrips") read_polygons(element, source, true);
             else skip_items(element, source);
         }
         return std::move(mesh_);
@@ -235,6 +235,7 @@ private:
         }
     }
 
+    //! Positions from the scalar x, y, z properties; other properties are skipped.
     template <typename Source>
     void read_vertices(const Element& element, Source& source) {
         int coordinate_of[3] = {-1, -1, -1};
@@ -267,12 +268,13 @@ private:
         }
     }
 
+    //! Faces (fan-triangulated) or triangle strips from the element's
+    //! `vertex_indices` (or `vertex_index`) list; other properties are skipped.
     template <typename Source>
-    void read_polygons(const Element& element, Source& source, std::initializer_list<const char*> list_names,
-                       bool strips) {
+    void read_polygons(const Element& element, Source& source, bool strips) {
         int list = -1;
         for (size_t i = 0; i < element.properties.size() && list < 0; ++i)
-            for (const char* name : list_names)
+            for (const char* name : {"vertex_indices", "vertex_index"})
                 if (element.properties[i].is_list && element.properties[i].name == name) list = static_cast<int>(i);
         if (list < 0)
             throw Error(FABVDB_ERR_BAD_INPUT, path_ + ": the " + element.name + " element has no vertex_indices list");
