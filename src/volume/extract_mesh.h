@@ -1,0 +1,18 @@
+//! Extraction of the zero iso-surface of a level set as a triangle mesh.
+//! Takes a FloatGrid level set (world units mm, negative inside) and an
+//! adaptivity in [0, 1] (0: uniform, every voxel crossing gives a vertex);
+//! returns OpenVDB's `volumeToMesh` surface with quads split along their
+//! shorter diagonal, triangles oriented outward, vertices shared. An empty
+//! level set gives an empty mesh. Checks cancellation between stages.
+#pragma once
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+
+namespace fabvdb::volume {
+
+Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& progress);
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,331 @@
+//! Robust signed distance from a dirty mesh (see signed_distance.h).
+//!
+//! 1. orient_soup: weld, drop degenerate/duplicate triangles, orient every
+//!    piece consistently and outward.
+//! 2. Unsigned distance in a narrow band (OpenVDB meshToVolume, unsigned).
+//! 3. Sign of every band voxel from the winding number (inside: w >= 1/2).
+//! 4. If the signed band is a consistent distance field (every sign change
+//!    between neighbours is a surface crossing, no surface voxel without one)
+//!    the interior is flood-filled and we are done. Otherwise (holes wider
+//!    than the band, interior or overlapping triangles) the winding number is
+//!    also sampled off the band — every voxel of band leaves, and the leaf-
+//!    sized blocks of the bounding box, voxel by voxel where w crosses 1/2 —
+//!    and the band is rebuilt from the zero surface of the combined field.
+#include "volume/signed_distance.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <openvdb/tools/LevelSetRebuild.h>
+#include <openvdb/tools/MeshToVolume.h>
+#include <openvdb/tools/SignedFloodFill.h>
+#include <openvdb/tree/LeafManager.h>
+
+#include "core/error.h"
+#include "volume/memory_estimate.h"
+#include "volume/orient_soup.h"
+#include "volume/progress_interrupter.h"
+#include "volume/winding_number.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+using FloatLeaf = openvdb::FloatTree::LeafNodeType;
+constexpr int leaf_dim = int(FloatLeaf::DIM);
+constexpr int leaf_size = int(FloatLeaf::SIZE);
+// Inside is w >= 1/2; an input counts as enclosing volume when some band voxel
+// is clearly inside (w >= 0.6, above the dipole approximation's error).
+constexpr double inside_threshold = 0.5;
+constexpr double clearly_inside = 0.6;
+
+class StageClock {
+public:
+    StageClock(SignedDistanceStats& stats, Progress& progress, const char* name)
+        : stats_(stats), name_(name), start_(std::chrono::steady_clock::now()) {
+        progress.stage(name);
+    }
+    ~StageClock() {
+        stats_.timings[name_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    SignedDistanceStats& stats_;
+    const char* name_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+void check_budget(double area, const SignedDistanceOptions& options, SignedDistanceStats& stats) {
+    stats.estimated_bytes = estimate_level_set_bytes(area, options.voxel_size, options.half_band_voxels);
+    if (options.memory_budget_bytes == 0 || stats.estimated_bytes <= options.memory_budget_bytes) return;
+    std::ostringstream message;
+    message.precision(3);
+    message << options.input_name << ": a level set would need ~"
+            << double(stats.estimated_bytes) / double(1ull << 30) << " GiB at voxel " << options.voxel_size
+            << " mm (budget " << double(options.memory_budget_bytes) / double(1ull << 30) << " GiB); --voxel "
+            << voxel_size_for_budget(area, options.half_band_voxels, options.memory_budget_bytes) << "mm fits";
+    throw Error(FABVDB_ERR_OUT_OF_BUDGET, message.str());
+}
+
+openvdb::FloatGrid::Ptr unsigned_band(const Mesh& mesh, const openvdb::math::Transform& transform, float half_band,
+                                      Progress& progress) {
+    std::vector<openvdb::Vec3s> points(mesh.vertices.size());
+    for (size_t i = 0; i < points.size(); ++i)
+        points[i] = openvdb::Vec3s(
+            transform.worldToIndex(openvdb::Vec3d(mesh.vertices[i][0], mesh.vertices[i][1], mesh.vertices[i][2])));
+    std::vector<openvdb::Vec3I> triangles(mesh.triangles.size());
+    for (size_t i = 0; i < triangles.size(); ++i)
+        triangles[i] = openvdb::Vec3I(mesh.triangles[i][0], mesh.triangles[i][1], mesh.triangles[i][2]);
+    openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
+    ProgressInterrupter interrupter(progress);
+    openvdb::FloatGrid::Ptr grid = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
+        interrupter, adapter, transform, half_band, half_band, openvdb::tools::UNSIGNED_DISTANCE_FIELD);
+    progress.check();
+    return grid;
+}
+
+// Runs `body(leaf_index)` over [0, count) in parallel, in slices so that
+// progress is reported from this thread and cancellation stops it early.
+template <class Body>
+void for_each_index(size_t count, Progress& progress, const Body& body) {
+    const size_t slices = 64, slice = (count + slices - 1) / slices;
+    for (size_t begin = 0; begin < count; begin += slice) {
+        const size_t end = std::min(count, begin + slice);
+        tbb::parallel_for(tbb::blocked_range<size_t>(begin, end), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t i = range.begin(); i != range.end(); ++i) {
+                if (progress.cancelled()) return;
+                body(i);
+            }
+        });
+        progress.update(double(end) / double(count));
+    }
+    progress.check();
+}
+
+Vec3 world_position(const openvdb::math::Transform& transform, const openvdb::Coord& ijk) {
+    const openvdb::Vec3d p = transform.indexToWorld(ijk);
+    return {p[0], p[1], p[2]};
+}
+
+// A signed narrow band is a distance field of its zero surface only if every
+// sign change between face neighbours is a crossing (|a| + |b| <= ~h) and
+// every voxel within h/2 of the surface has a neighbour across it.
+bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel) {
+    std::atomic<bool> consistent{true};
+    openvdb::tree::LeafManager<const openvdb::FloatTree> leaves(grid.tree());
+    tbb::parallel_for(leaves.leafRange(), [&](const auto& range) {
+        auto accessor = grid.getConstAccessor();
+        for (auto leaf = range.begin(); leaf && consistent; ++leaf) {
+            for (auto voxel_it = leaf->cbeginValueOn(); voxel_it; ++voxel_it) {
+                const float a = *voxel_it;
+                const openvdb::Coord ijk = voxel_it.getCoord();
+                bool crossing = false;
+                for (int axis = 0; axis < 3; ++axis)
+                    for (int step : {-1, 1}) {
+                        openvdb::Coord n = ijk;
+                        n[axis] += step;
+                        float b;
+                        if (!accessor.probeValue(n, b) || (a < 0) == (b < 0)) continue;
+                        crossing = true;
+                        if (std::abs(a) + std::abs(b) > 1.5 * voxel) consistent = false;
+                    }
+                if (!crossing && std::abs(a) < 0.5 * voxel) consistent = false;
+            }
+        }
+    });
+    return consistent;
+}
+
+// Distance-like value of a voxel off the band from the winding numbers of its
+// leaf: (1/2 - w) / |grad w|, clamped to the band.
+float value_from_winding(const float* w, int offset, double voxel, float background) {
+    const int x = offset >> 6, y = (offset >> 3) & 7, z = offset & 7;
+    const int coordinate[3] = {x, y, z}, stride[3] = {64, 8, 1};
+    double gradient_squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const int lo = coordinate[axis] > 0 ? -1 : 0, hi = coordinate[axis] < leaf_dim - 1 ? 1 : 0;
+        const double g = (w[offset + hi * stride[axis]] - w[offset + lo * stride[axis]]) / ((hi - lo) * voxel);
+        gradient_squared += g * g;
+    }
+    const double value = (inside_threshold - w[offset]) / std::max(std::sqrt(gradient_squared), 1e-12);
+    return float(std::clamp(value, -double(background), double(background)));
+}
+
+// The off-band part of the field for inputs whose band is not consistent.
+void add_off_band_winding(openvdb::FloatGrid& grid, const WindingNumber& winding, const BoundingBox& box,
+                          std::vector<float>& band_winding, Progress& progress) {
+    const openvdb::math::Transform& transform = grid.transform();
+    const double voxel = transform.voxelSize()[0];
+    const float background = grid.background();
+    openvdb::FloatTree& tree = grid.tree();
+
+    // Every voxel of band leaves: w where not yet known, then values.
+    {
+        openvdb::tree::LeafManager<openvdb::FloatTree> leaves(tree);
+        progress.stage("winding number off band");
+        for_each_index(leaves.leafCount(), progress, [&](size_t i) {
+            FloatLeaf& leaf = leaves.leaf(i);
+            float* w = &band_winding[i * leaf_size];
+            for (int offset = 0; offset < leaf_size; ++offset)
+                if (!leaf.isValueOn(offset)) w[offset] = float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
+            for (int offset = 0; offset < leaf_size; ++offset)
+                if (!leaf.isValueOn(offset)) leaf.setValueOn(offset, value_from_winding(w, offset, voxel, background));
+        });
+    }
+
+    // Leaf-sized blocks of the bounding box that the band does not reach:
+    // classify each by w at its corners and centre; blocks where w crosses 1/2
+    // are sampled voxel by voxel, inside blocks become inside tiles.
+    progress.stage("winding number blocks");
+    const openvdb::Coord lo = transform.worldToIndexNodeCentered(openvdb::Vec3d(box.min[0], box.min[1], box.min[2]));
+    const openvdb::Coord hi = transform.worldToIndexNodeCentered(openvdb::Vec3d(box.max[0], box.max[1], box.max[2]));
+    openvdb::Coord first, count;
+    for (int k = 0; k < 3; ++k) {
+        first[k] = ((lo[k] - leaf_dim) >> 3) * leaf_dim;
+        count[k] = (((hi[k] + leaf_dim) >> 3) * leaf_dim - first[k]) / leaf_dim + 1;
+    }
+    const size_t corners_x = size_t(count[0]) + 1, corners_y = size_t(count[1]) + 1, corners_z = size_t(count[2]) + 1;
+    std::vector<float> corner_winding(corners_x * corners_y * corners_z);
+    for_each_index(corners_x, progress, [&](size_t i) {
+        for (size_t j = 0; j < corners_y; ++j)
+            for (size_t k = 0; k < corners_z; ++k) {
+                const openvdb::Vec3d corner = transform.indexToWorld(
+                    openvdb::Vec3d(first[0] + leaf_dim * double(i) - 0.5, first[1] + leaf_dim * double(j) - 0.5,
+                                   first[2] + leaf_dim * double(k) - 0.5));
+                corner_winding[(i * corners_y + j) * corners_z + k] = float(winding({corner[0], corner[1], corner[2]}));
+            }
+    });
+    enum class Block : uint8_t { outside, inside, mixed };
+    const size_t blocks = size_t(count[0]) * size_t(count[1]) * size_t(count[2]);
+    std::vector<Block> kind(blocks, Block::outside);
+    const auto block_origin = [&](size_t b) {
+        const size_t i = b / (size_t(count[1]) * size_t(count[2])), j = (b / size_t(count[2])) % size_t(count[1]),
+                     k = b % size_t(count[2]);
+        return openvdb::Coord(first[0] + leaf_dim * int(i), first[1] + leaf_dim * int(j), first[2] + leaf_dim * int(k));
+    };
+    for_each_index(blocks, progress, [&](size_t b) {
+        const openvdb::Coord origin = block_origin(b);
+        if (tree.probeConstLeaf(origin)) return;
+        const size_t i = size_t(origin[0] - first[0]) / leaf_dim, j = size_t(origin[1] - first[1]) / leaf_dim,
+                     k = size_t(origin[2] - first[2]) / leaf_dim;
+        const openvdb::Vec3d centre = transform.indexToWorld(origin.asVec3d() + openvdb::Vec3d(0.5 * (leaf_dim - 1)));
+        double w_min = winding({centre[0], centre[1], centre[2]}), w_max = w_min;
+        for (size_t c = 0; c < 8; ++c) {
+            const double w = corner_winding[((i + (c & 1)) * corners_y + j + ((c >> 1) & 1)) * corners_z + k + (c >> 2)];
+            w_min = std::min(w_min, w);
+            w_max = std::max(w_max, w);
+        }
+        if (w_min > inside_threshold + 0.1) kind[b] = Block::inside;
+        else if (w_max >= inside_threshold - 0.1) kind[b] = Block::mixed;
+    });
+
+    std::vector<FloatLeaf*> mixed_leaves;
+    for (size_t b = 0; b < blocks; ++b) {
+        if (kind[b] == Block::inside) tree.addTile(1, block_origin(b), -background, false);
+        if (kind[b] == Block::mixed) mixed_leaves.push_back(tree.touchLeaf(block_origin(b)));
+    }
+    progress.stage("winding number across holes");
+    for_each_index(mixed_leaves.size(), progress, [&](size_t i) {
+        FloatLeaf& leaf = *mixed_leaves[i];
+        float w[leaf_size];
+        for (int offset = 0; offset < leaf_size; ++offset)
+            w[offset] = float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
+        for (int offset = 0; offset < leaf_size; ++offset)
+            leaf.setValueOn(offset, value_from_winding(w, offset, voxel, background));
+    });
+}
+
+}  // namespace
+
+openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const SignedDistanceOptions& options,
+                                                  Progress& progress, SignedDistanceStats* stats_out) {
+    if (!(options.voxel_size > 0.0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "voxel size must be > 0");
+    if (options.half_band_voxels < 2) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "half band must be >= 2 voxels");
+    if (options.thicken < 0.0) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "thickness must be >= 0");
+    openvdb::initialize();
+    SignedDistanceStats stats;
+    check_budget(surface_area(input), options, stats);
+    const double voxel = options.voxel_size;
+    const float half_band = float(options.half_band_voxels);
+    const auto transform = openvdb::math::Transform::createLinearTransform(voxel);
+
+    Mesh mesh;
+    {
+        StageClock clock(stats, progress, "orient");
+        mesh = orient_soup(input, progress);
+    }
+    if (mesh.triangles.empty())
+        throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangle with a non-zero area");
+
+    openvdb::FloatGrid::Ptr grid;
+    {
+        StageClock clock(stats, progress, "distance");
+        grid = unsigned_band(mesh, *transform, half_band, progress);
+    }
+
+    std::unique_ptr<WindingNumber> winding;
+    {
+        StageClock clock(stats, progress, "winding number tree");
+        winding = std::make_unique<WindingNumber>(mesh);
+    }
+
+    std::vector<float> band_winding;
+    std::atomic<uint64_t> clearly_inside_voxels{0};
+    {
+        StageClock clock(stats, progress, "winding number");
+        openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
+        band_winding.assign(leaves.leafCount() * size_t(leaf_size), 0.0f);
+        for_each_index(leaves.leafCount(), progress, [&](size_t i) {
+            uint64_t inside = 0;
+            for (auto voxel_it = leaves.leaf(i).beginValueOn(); voxel_it; ++voxel_it) {
+                const double w = (*winding)(world_position(*transform, voxel_it.getCoord()));
+                band_winding[i * leaf_size + voxel_it.pos()] = float(w);
+                if (w >= inside_threshold) voxel_it.setValue(-*voxel_it);
+                if (w >= clearly_inside) ++inside;
+            }
+            clearly_inside_voxels += inside;
+        });
+    }
+
+    if (clearly_inside_voxels == 0) {
+        if (options.thicken <= 0.0)
+            throw Error(FABVDB_ERR_BAD_INPUT, options.input_name +
+                                                  ": encloses no volume (an open sheet); give a thickness "
+                                                  "(--thicken) to make it a solid sheet");
+        StageClock clock(stats, progress, "thicken");
+        const double half_thickness = 0.5 * options.thicken;
+        grid = unsigned_band(mesh, *transform, float(std::ceil(half_thickness / voxel)) + half_band, progress);
+        openvdb::tools::foreach(grid->beginValueAll(), [&](const openvdb::FloatGrid::ValueAllIter& it) {
+            it.setValue(float(*it - half_thickness));
+        });
+        ProgressInterrupter interrupter(progress);
+        grid = openvdb::tools::levelSetRebuild(*grid, 0.0f, half_band, half_band, nullptr, &interrupter);
+        progress.check();
+        stats.thickened = stats.rebuilt = true;
+    } else if (band_is_consistent(*grid, voxel)) {
+        StageClock clock(stats, progress, "flood fill");
+        openvdb::tools::signedFloodFill(grid->tree());
+    } else {
+        StageClock clock(stats, progress, "rebuild");
+        add_off_band_winding(*grid, *winding, bounding_box(mesh), band_winding, progress);
+        band_winding = {};
+        progress.stage("rebuild");
+        ProgressInterrupter interrupter(progress);
+        grid = openvdb::tools::levelSetRebuild(*grid, 0.0f, half_band, half_band, nullptr, &interrupter);
+        progress.check();
+        stats.rebuilt = true;
+    }
+    grid->setTransform(transform);
+    grid->setGridClass(openvdb::GRID_LEVEL_SET);
+    grid->setName("surface");
+    stats.active_voxels = grid->activeVoxelCount();
+    if (stats_out) *stats_out = stats;
+    return grid;
+}
+
+}  // namespace fabvdb::volume

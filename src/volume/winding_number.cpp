@@ -1,0 +1,155 @@
+//! Fast generalized winding number (see winding_number.h).
+#include "volume/winding_number.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace fabvdb::volume {
+
+namespace {
+
+constexpr uint32_t leaf_size = 8;
+constexpr double inverse_four_pi = 0.25 / M_PI;
+
+// Solid angle of triangle (a, b, c) seen from the origin, over 4π
+// (Van Oosterom & Strackee 1983): positive when the triangle winds
+// counter-clockwise seen from the origin's far side.
+double solid_angle_fraction(const double* a, const double* b, const double* c) {
+    const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                       a[2] * (b[0] * c[1] - b[1] * c[0]);
+    const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const double bc = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
+    const double ca = c[0] * a[0] + c[1] * a[1] + c[2] * a[2];
+    const double denominator = la * lb * lc + ab * lc + bc * la + ca * lb;
+    return 2.0 * std::atan2(det, denominator) * inverse_four_pi;
+}
+
+}  // namespace
+
+WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
+    std::vector<uint32_t> kept;
+    kept.reserve(mesh.triangles.size());
+    std::vector<double> all_corners;
+    all_corners.reserve(mesh.triangles.size() * 9);
+    for (const Triangle& t : mesh.triangles) {
+        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;
+        kept.push_back(uint32_t(all_corners.size() / 9));
+        for (const Vec3* p : {&a, &b, &c}) all_corners.insert(all_corners.end(), p->begin(), p->end());
+    }
+    const uint32_t count = uint32_t(kept.size());
+    std::vector<double> centroids(size_t(count) * 3);
+    for (uint32_t i = 0; i < count; ++i)
+        for (int k = 0; k < 3; ++k)
+            centroids[3 * i + k] = (all_corners[9 * i + k] + all_corners[9 * i + 3 + k] + all_corners[9 * i + 6 + k]) / 3.0;
+    std::vector<uint32_t> order(count);
+    std::iota(order.begin(), order.end(), 0u);
+    corners_.swap(all_corners);
+    if (count == 0) return;
+    nodes_.reserve(2 * size_t(count) / leaf_size + 2);
+    build(0, count, centroids, order, accuracy);
+    std::vector<double> sorted(corners_.size());
+    for (uint32_t i = 0; i < count; ++i)
+        std::copy_n(corners_.begin() + 9 * size_t(order[i]), 9, sorted.begin() + 9 * size_t(i));
+    corners_.swap(sorted);
+}
+
+uint32_t WindingNumber::build(uint32_t first, uint32_t count, std::vector<double>& centroids,
+                              std::vector<uint32_t>& order, double accuracy) {
+    const uint32_t index = uint32_t(nodes_.size());
+    nodes_.push_back(Node{});
+    double area_sum = 0.0, center[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (uint32_t i = first; i < first + count; ++i) {
+        const double* p = &corners_[9 * size_t(order[i])];
+        const double u[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
+        const double v[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+        const double n[3] = {0.5 * (u[1] * v[2] - u[2] * v[1]), 0.5 * (u[2] * v[0] - u[0] * v[2]),
+                             0.5 * (u[0] * v[1] - u[1] * v[0])};
+        const double area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        area_sum += area;
+        for (int k = 0; k < 3; ++k) {
+            normal[k] += n[k];
+            center[k] += area * centroids[3 * size_t(order[i]) + k];
+            lo[k] = std::min(lo[k], centroids[3 * size_t(order[i]) + k]);
+            hi[k] = std::max(hi[k], centroids[3 * size_t(order[i]) + k]);
+        }
+    }
+    for (int k = 0; k < 3; ++k) center[k] /= area_sum;
+    double radius_squared = 0.0;
+    for (uint32_t i = first; i < first + count; ++i) {
+        const double* p = &corners_[9 * size_t(order[i])];
+        for (int corner = 0; corner < 3; ++corner) {
+            const double dx = p[3 * corner] - center[0], dy = p[3 * corner + 1] - center[1],
+                         dz = p[3 * corner + 2] - center[2];
+            radius_squared = std::max(radius_squared, dx * dx + dy * dy + dz * dz);
+        }
+    }
+    Node node;
+    std::copy_n(center, 3, node.center);
+    std::copy_n(normal, 3, node.area_normal);
+    node.far_squared = accuracy * accuracy * radius_squared;
+    if (count <= leaf_size) {
+        node.first = first;
+        node.count = count;
+        nodes_[index] = node;
+        return index;
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+    const uint32_t half = count / 2;
+    std::nth_element(order.begin() + first, order.begin() + first + half, order.begin() + first + count,
+                     [&](uint32_t a, uint32_t b) { return centroids[3 * size_t(a) + axis] < centroids[3 * size_t(b) + axis]; });
+    node.count = 0;
+    nodes_[index] = node;
+    build(first, half, centroids, order, accuracy);  // the left child is always index + 1
+    nodes_[index].first = build(first + half, count - half, centroids, order, accuracy);
+    return index;
+}
+
+double WindingNumber::triangles_exact(uint32_t first, uint32_t count, const Vec3& q) const {
+    double sum = 0.0;
+    for (uint32_t i = first; i < first + count; ++i) {
+        const double* p = &corners_[9 * size_t(i)];
+        const double a[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+        const double b[3] = {p[3] - q[0], p[4] - q[1], p[5] - q[2]};
+        const double c[3] = {p[6] - q[0], p[7] - q[1], p[8] - q[2]};
+        sum += solid_angle_fraction(a, b, c);
+    }
+    return sum;
+}
+
+double WindingNumber::exact(const Vec3& q) const { return triangles_exact(0, uint32_t(corners_.size() / 9), q); }
+
+double WindingNumber::operator()(const Vec3& q) const {
+    if (nodes_.empty()) return 0.0;
+    double sum = 0.0;
+    uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        const double d[3] = {node.center[0] - q[0], node.center[1] - q[1], node.center[2] - q[2]};
+        const double distance_squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (distance_squared > node.far_squared) {
+            const double dot = node.area_normal[0] * d[0] + node.area_normal[1] * d[1] + node.area_normal[2] * d[2];
+            sum += dot * inverse_four_pi / (distance_squared * std::sqrt(distance_squared));
+        } else if (node.count > 0) {
+            sum += triangles_exact(node.first, node.count, q);
+        } else {
+            stack[top++] = node.first;
+            stack[top++] = uint32_t(&node - nodes_.data()) + 1;
+        }
+    }
+    return sum;
+}
+
+}  // namespace fabvdb::volume
