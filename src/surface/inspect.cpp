@@ -18,12 +18,17 @@ nlohmann::json inspect_mesh(const Mesh& mesh, Progress& progress) {
     const Mesh welded = weld_coincident_vertices(mesh);
     const TopologySummary welded_topology = summarize_topology(welded);
     progress.update(0.5);
-    const size_t degenerate = degenerate_triangles(mesh).size();
+    const std::vector<uint32_t> degenerate = degenerate_triangles(mesh);
     const size_t duplicates = duplicate_triangles(mesh).size();
     const std::vector<double> volumes =
         component_signed_volumes(mesh, topology.triangle_component, topology.components);
     progress.update(1.0);
-    const size_t intersecting = self_intersecting_pairs(mesh, progress).size();
+    const std::vector<std::pair<uint32_t, uint32_t>> intersecting = self_intersecting_pairs(mesh, progress);
+    std::vector<bool> is_degenerate(mesh.triangles.size(), false);
+    for (uint32_t t : degenerate) is_degenerate[t] = true;
+    size_t intersecting_with_degenerate = 0;
+    for (const auto& [i, j] : intersecting)
+        if (is_degenerate[i] || is_degenerate[j]) ++intersecting_with_degenerate;
 
     nlohmann::json volume = nullptr;
     size_t negative_shells = 0;
@@ -47,9 +52,10 @@ nlohmann::json inspect_mesh(const Mesh& mesh, Progress& progress) {
     report["non_manifold_vertices"] = topology.non_manifold_vertices;
     report["consistently_oriented"] = topology.inconsistent_edges == 0;
     report["inconsistent_edges"] = topology.inconsistent_edges;
-    report["degenerate_triangles"] = degenerate;
+    report["degenerate_triangles"] = degenerate.size();
     report["duplicate_triangles"] = duplicates;
-    report["self_intersecting_pairs"] = intersecting;
+    report["self_intersecting_pairs"] = intersecting.size();
+    report["self_intersecting_pairs_degenerate"] = intersecting_with_degenerate;
     report["volume"] = volume;
     report["negative_volume_shells"] = negative_shells;
     report["genus"] = topology.genus ? nlohmann::json(*topology.genus) : nlohmann::json(nullptr);

@@ -222,6 +222,18 @@ TEST(Inspect, DegenerateTriangles) {
     EXPECT_EQ(r["welded"]["vertices"], 13);
 }
 
+TEST(Inspect, NegativeZeroIsTheSamePositionAsZero) {
+    Mesh mesh;
+    mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-0.0, 0, -0.0}, {0, -1, 0}, {1, 0, 0}};
+    mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+    const json r = inspect(mesh);
+    EXPECT_EQ(r["components"], 2);
+    EXPECT_EQ(r["welded"]["vertices"], 4);
+    EXPECT_EQ(r["welded"]["components"], 1);
+    EXPECT_EQ(r["welded"]["boundary_edges"], 4);  // the shared side joins the two triangles
+    EXPECT_EQ(r["self_intersecting_pairs"], 0);   // they share positions
+}
+
 TEST(Inspect, UnreferencedVerticesAreCountedButNotInTheBox) {
     Mesh box = fabvdb::test::make_box({0, 0, 0}, {1, 1, 1});
     box.vertices.push_back({50, 50, 50});
@@ -259,6 +271,7 @@ TEST(Inspect, PillarThroughABoxMakesEightPairs) {
                                            fabvdb::test::make_box({0.2, 1.2, 1}, {0.6, 1.8, 3}));
     const json r = inspect(mesh);
     EXPECT_EQ(r["self_intersecting_pairs"], 8);
+    EXPECT_EQ(r["self_intersecting_pairs_degenerate"], 0);
     EXPECT_EQ(r["components"], 2);
     EXPECT_TRUE(r["closed"].get<bool>());
 }
@@ -291,6 +304,11 @@ TEST(SelfIntersections, DegenerateTrianglesAreTestedAsSegmentsAndPoints) {
     // triangle 4 lies on the needle; the needle beside it (3) touches nothing.
     const std::vector<std::pair<uint32_t, uint32_t>> expected = {{0, 1}, {0, 2}, {1, 4}};
     EXPECT_EQ(pairs_of(mesh), expected);
+    mesh.triangles.push_back({0, 1, 2});  // a duplicate: shares every corner with triangle 0
+    const json r = inspect(mesh);
+    EXPECT_EQ(r["self_intersecting_pairs"], 5);             // and meets the needle and the point
+    EXPECT_EQ(r["self_intersecting_pairs_degenerate"], 5);  // every pair has a collapsed triangle
+    EXPECT_EQ(r["degenerate_triangles"], 4);
 }
 
 TEST(SelfIntersections, AgreesWithAnAllPairsSweep) {
