@@ -1,0 +1,96 @@
+//! C API: mold decomposition (`fabvdb decompose`) — options, validation, the
+//! decomposition pipeline and its output folder.
+#include <algorithm>
+#include <cmath>
+
+#include "api/guard.h"
+#include "surface/decompose.h"
+#include "surface/decomposition_io.h"
+
+namespace {
+
+const fabvdb_decompose_options& options_or_defaults(const fabvdb_decompose_options* options,
+                                                    fabvdb_decompose_options& defaults) {
+    fabvdb_decompose_options_init(&defaults);
+    if (!options) return defaults;
+    if (options->struct_size < sizeof(fabvdb_decompose_options))
+        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT,
+                            "options: struct_size is not set (call fabvdb_decompose_options_init)");
+    return *options;
+}
+
+void require_range(bool ok, const char* message) {
+    if (!ok) throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, message);
+}
+
+fabvdb::surface::DecomposeSettings settings_for(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
+                                                const fabvdb_decompose_options& o) {
+    require_range(std::isfinite(o.shell_thickness) && o.shell_thickness >= 0, "shell_thickness must be >= 0");
+    require_range(std::isfinite(o.gamma) && o.gamma > 0, "gamma must be > 0");
+    require_range(o.parts >= 0, "parts must be >= 0");
+    require_range(o.max_parts >= 2, "max_parts must be >= 2");
+    require_range(o.draft_degrees >= 0 && o.draft_degrees <= 30, "draft_degrees must be in [0, 30]");
+    require_range(o.w_overhang >= 0 && o.w_overlap >= 0 && o.w_coarse_overlap >= 0 && o.w_smooth >= 0,
+                  "the weights must be >= 0");
+    require_range(o.low_res_triangles >= 100, "low_res_triangles must be >= 100");
+    require_range(o.smoothing_iterations >= 0, "smoothing_iterations must be >= 0");
+    const fabvdb::BoundingBox box = fabvdb::bounding_box(mesh);
+    const double longest = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
+    fabvdb::surface::DecomposeSettings s;
+    s.shell.target_triangles = size_t(o.low_res_triangles);
+    s.shell.thickness = o.shell_thickness > 0 ? o.shell_thickness : 0.03 * longest;
+    s.shell.solid = (o.flags & FABVDB_DECOMPOSE_SOLID) != 0;
+    s.shell.memory_budget_bytes = ctx->budget_bytes();
+    s.draft_radians = o.draft_degrees * M_PI / 180.0;
+    s.decomposition.gamma = o.gamma;
+    s.decomposition.parts = o.parts;
+    s.decomposition.max_parts = std::max(o.max_parts, o.parts);
+    s.decomposition.weights.overhang = o.w_overhang;
+    s.decomposition.weights.overlap = o.w_overlap;
+    s.decomposition.overlap_weight = o.w_coarse_overlap;
+    s.decomposition.smoothness_weight = o.w_smooth;
+    return s;
+}
+
+}  // namespace
+
+extern "C" {
+
+void fabvdb_decompose_options_init(fabvdb_decompose_options* options) {
+    if (!options) return;
+    *options = fabvdb_decompose_options{};
+    options->struct_size = sizeof(fabvdb_decompose_options);
+    options->flags = 0;
+    options->shell_thickness = 0;
+    options->gamma = 0.05;
+    options->parts = 0;
+    options->max_parts = 16;
+    options->draft_degrees = 1;
+    options->w_overhang = 1;
+    options->w_overlap = 1;
+    options->w_coarse_overlap = 1e6;
+    options->w_smooth = 1;
+    options->low_res_triangles = 10000;
+    options->smoothing_iterations = 10;
+}
+
+fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_decompose_options* opts,
+                                    const char* edits_path, const char* out_dir, fabvdb_report** out_report) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(mesh, "mesh");
+        fabvdb::api::require(out_dir, "out_dir");
+        fabvdb_decompose_options defaults;
+        const fabvdb_decompose_options& options = options_or_defaults(opts, defaults);
+        const fabvdb::surface::DecomposeSettings settings = settings_for(ctx, mesh->mesh, options);
+        const std::vector<fabvdb::surface::Edit> edits =
+            edits_path ? fabvdb::surface::read_edits(edits_path) : std::vector<fabvdb::surface::Edit>{};
+        fabvdb::Progress progress = ctx->make_progress();
+        fabvdb::surface::DecomposeResult result = fabvdb::surface::decompose_mesh(mesh->mesh, settings, edits, progress);
+        progress.stage("write decomposition");
+        fabvdb::surface::write_decomposition(out_dir, mesh->mesh, result.shell, result.terms, result.decomposition,
+                                             settings.decomposition);
+        if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(result.report));
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,63 @@
+//! coarse_decomposition: region growing for N_P = 2, 3, ... with parting lines
+//! computed in parallel over the parts.
+#include "surface/coarse_decomposition.h"
+
+#include <chrono>
+
+#include <tbb/parallel_for.h>
+
+namespace fabvdb::surface {
+
+double Decomposition::total_energy() const {
+    double sum = 0;
+    for (const PartMolding& p : parts) sum += p.energy.total;
+    return sum;
+}
+
+std::vector<PartMolding> parting_lines(const Shell& shell, const MoldabilityTerms& terms,
+                                       const std::vector<int>& part_of_triangle, const std::vector<int>& directions,
+                                       const MoldabilityWeights& weights) {
+    std::vector<PartMolding> parts(directions.size());
+    tbb::parallel_for(size_t(0), directions.size(), [&](size_t p) {
+        parts[p] = parting_line(shell, terms, part_of_triangle, int(p), directions[p], weights);
+    });
+    return parts;
+}
+
+Decomposition coarse_decomposition(const Shell& shell, const MoldabilityTerms& terms,
+                                   const DecompositionOptions& options, nlohmann::json& log, Progress& progress) {
+    const Elements elements = make_elements(shell, {}, std::vector<char>(shell.triangle_count(), 1));
+    const int first = options.parts > 0 ? options.parts : 2;
+    const int last = options.parts > 0 ? options.parts : options.max_parts;
+    Decomposition best;
+    double best_energy = 1e300;
+    for (int count = first; count <= last; ++count) {
+        progress.stage("coarse decomposition");
+        const auto start = std::chrono::steady_clock::now();
+        std::vector<int> seeds, directions;
+        random_seeds(shell, terms, elements, count, seeds, directions);
+        const Regions regions = grow_regions(shell, terms, elements, seeds, directions, options.overlap_weight,
+                                             options.max_iterations, progress);
+        const auto grown = std::chrono::steady_clock::now();
+        Decomposition attempt;
+        attempt.part_of_triangle = regions.region_of_triangle;
+        attempt.parts = parting_lines(shell, terms, attempt.part_of_triangle, regions.direction, options.weights);
+        const auto cut = std::chrono::steady_clock::now();
+        const double energy = attempt.total_energy();
+        log.push_back({{"parts", int(seeds.size())},
+                       {"iterations", regions.iterations},
+                       {"region_cost_per_iteration", regions.cost_per_iteration},
+                       {"moldability_energy", energy},
+                       {"seconds_per_iteration",
+                        std::chrono::duration<double>(grown - start).count() / regions.iterations},
+                       {"parting_line_seconds", std::chrono::duration<double>(cut - grown).count()}});
+        if (energy < best_energy) {
+            best_energy = energy;
+            best = std::move(attempt);
+        }
+        if (energy < options.gamma || int(seeds.size()) < count) break;
+    }
+    return best;
+}
+
+}  // namespace fabvdb::surface

@@ -1,0 +1,72 @@
+//! decompose_mesh: shell_from_mesh → compute_moldability_terms →
+//! coarse_decomposition → edits, timing each stage for the report.
+#include "surface/decompose.h"
+
+#include <chrono>
+
+#include "surface/shell_from_mesh.h"
+
+namespace fabvdb::surface {
+
+DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& settings, const std::vector<Edit>& edits,
+                               Progress& progress) {
+    DecomposeResult result;
+    nlohmann::json& report = result.report;
+    auto start = std::chrono::steady_clock::now();
+    const auto lap = [&](const char* name) {
+        const auto now = std::chrono::steady_clock::now();
+        report["seconds"][name] = std::chrono::duration<double>(now - start).count();
+        start = now;
+    };
+    nlohmann::json low_res;
+    result.shell = shell_from_mesh(input, settings.shell, progress, &low_res);
+    lap("precompute_shell");
+    result.terms = compute_moldability_terms(result.shell, settings.draft_radians, progress);
+    lap("precompute_directions");
+    report["seconds"]["precompute_per_direction"] =
+        report["seconds"]["precompute_directions"].get<double>() / double(result.terms.directions.directions.size());
+    report["attempts"] = nlohmann::json::array();
+    result.decomposition =
+        coarse_decomposition(result.shell, result.terms, settings.decomposition, report["attempts"], progress);
+    lap("coarse_decomposition");
+    report["edits"] = nlohmann::json::array();
+    if (!edits.empty()) progress.stage("edits");
+    for (size_t i = 0; i < edits.size(); ++i) {
+        nlohmann::json record = apply_edit(result.shell, result.terms, settings.decomposition, edits[i], i,
+                                           result.decomposition, progress);
+        const double energy = record["total_moldability_energy"];
+        if (energy > settings.decomposition.gamma)
+            record["warning"] = "the total moldability energy exceeds gamma after this edit";
+        report["edits"].push_back(std::move(record));
+        progress.update(double(i + 1) / edits.size());
+    }
+    lap("edits");
+
+    const Decomposition& d = result.decomposition;
+    const double energy = d.total_energy();
+    report["gamma"] = settings.decomposition.gamma;
+    report["shell_thickness"] = result.shell.thickness;
+    report["unit_scale"] = result.shell.unit_scale;
+    report["low_res"] = low_res;
+    report["overlap_pairs"] = result.terms.pair_count;
+    report["part_count"] = d.parts.size();
+    report["total_moldability_energy"] = energy;
+    report["under_gamma"] = energy < settings.decomposition.gamma;
+    report["parts"] = nlohmann::json::array();
+    for (size_t p = 0; p < d.parts.size(); ++p) {
+        double area = 0;
+        for (size_t i = 0; i < d.parts[p].surface.size(); ++i)
+            if (d.parts[p].surface.kind[i] == PartSurface::outer) area += d.parts[p].surface.area[i];
+        report["parts"].push_back({{"id", p},
+                                   {"parting_direction", result.terms.directions.directions[d.parts[p].direction]},
+                                   {"moldability_energy", d.parts[p].energy.total},
+                                   {"area", area / (result.shell.unit_scale * result.shell.unit_scale)}});
+    }
+    report["warnings"] = nlohmann::json::array();
+    if (!(energy < settings.decomposition.gamma))
+        report["warnings"].push_back("the total moldability energy " + std::to_string(energy) +
+                                     " is not under gamma " + std::to_string(settings.decomposition.gamma));
+    return result;
+}
+
+}  // namespace fabvdb::surface

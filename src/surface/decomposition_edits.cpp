@@ -1,0 +1,324 @@
+//! decomposition_edits: JSON parsing, brute-force nearest queries on S_low
+//! (edits touch a handful of points), local regrowth for no-cut strokes,
+//! Dijkstra paths for cuts, unions for merges.
+#include "surface/decomposition_edits.h"
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <queue>
+#include <set>
+
+#include "core/error.h"
+#include "surface/vec3_ops.h"
+
+namespace fabvdb::surface {
+
+namespace {
+
+double squared(const Vec3& v) { return dot(v, v); }
+
+Vec3 centroid(const Shell& shell, size_t t) {
+    const Triangle& f = shell.outer.triangles[t];
+    return (1.0 / 3.0) * (shell.outer.vertices[f[0]] + shell.outer.vertices[f[1]] + shell.outer.vertices[f[2]]);
+}
+
+size_t nearest_triangle(const Shell& shell, const Vec3& p) {
+    size_t best = 0;
+    double best_d = 1e300;
+    for (size_t t = 0; t < shell.triangle_count(); ++t) {
+        const double d = squared(centroid(shell, t) - p);
+        if (d < best_d) {
+            best_d = d;
+            best = t;
+        }
+    }
+    return best;
+}
+
+uint32_t nearest_vertex(const Shell& shell, const Vec3& p) {
+    uint32_t best = 0;
+    double best_d = 1e300;
+    for (uint32_t v = 0; v < shell.outer.vertices.size(); ++v) {
+        const double d = squared(shell.outer.vertices[v] - p);
+        if (d < best_d) {
+            best_d = d;
+            best = v;
+        }
+    }
+    return best;
+}
+
+//! Connected pieces of `members` (triangles) across edges not in `blocked`.
+std::vector<std::vector<uint32_t>> pieces_of(const Shell& shell, const std::vector<uint32_t>& members,
+                                             const std::set<std::pair<uint32_t, uint32_t>>& blocked) {
+    std::vector<char> in(shell.triangle_count(), 0), seen(shell.triangle_count(), 0);
+    for (uint32_t t : members) in[t] = 1;
+    std::vector<std::vector<uint32_t>> pieces;
+    for (uint32_t start : members) {
+        if (seen[start]) continue;
+        pieces.emplace_back();
+        std::vector<uint32_t> stack{start};
+        seen[start] = 1;
+        while (!stack.empty()) {
+            const uint32_t t = stack.back();
+            stack.pop_back();
+            pieces.back().push_back(t);
+            const Triangle& f = shell.outer.triangles[t];
+            for (int k = 0; k < 3; ++k) {
+                const int other = shell.neighbor[t][k];
+                if (!in[other] || seen[other] || blocked.count(std::minmax(f[k], f[(k + 1) % 3]))) continue;
+                seen[other] = 1;
+                stack.push_back(uint32_t(other));
+            }
+        }
+    }
+    std::sort(pieces.begin(), pieces.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    return pieces;
+}
+
+std::vector<uint32_t> triangles_of_part(const Decomposition& decomposition, int part) {
+    std::vector<uint32_t> members;
+    for (size_t t = 0; t < decomposition.part_of_triangle.size(); ++t)
+        if (decomposition.part_of_triangle[t] == part) members.push_back(uint32_t(t));
+    return members;
+}
+
+//! Removes parts that own no triangle any more and renumbers the rest in order.
+void drop_empty_parts(Decomposition& decomposition) {
+    std::vector<size_t> size(decomposition.parts.size(), 0);
+    for (int p : decomposition.part_of_triangle) ++size[p];
+    std::vector<int> renumber(size.size(), -1);
+    std::vector<PartMolding> kept;
+    for (size_t p = 0; p < size.size(); ++p)
+        if (size[p] > 0) {
+            renumber[p] = int(kept.size());
+            kept.push_back(std::move(decomposition.parts[p]));
+        }
+    for (int& p : decomposition.part_of_triangle) p = renumber[p];
+    decomposition.parts = std::move(kept);
+}
+
+std::vector<int> apply_no_cut(const Shell& shell, const MoldabilityTerms& terms, const DecompositionOptions& options,
+                              const Edit& edit, const std::string& what, Decomposition& decomposition,
+                              Progress& progress) {
+    std::vector<uint32_t> brushed;
+    const double r2 = edit.radius * edit.radius;
+    for (size_t t = 0; t < shell.triangle_count(); ++t) {
+        const Vec3 c = centroid(shell, t);
+        for (const Vec3& p : edit.points)
+            if (squared(c - p) <= r2) {
+                brushed.push_back(uint32_t(t));
+                break;
+            }
+    }
+    if (brushed.empty()) brushed.push_back(uint32_t(nearest_triangle(shell, edit.points.front())));
+    const std::vector<uint32_t> stroke = pieces_of(shell, brushed, {}).front();
+    std::set<int> touched;
+    for (uint32_t t : stroke) touched.insert(decomposition.part_of_triangle[t]);
+    if (touched.size() < 2) return {*touched.begin()};
+    std::vector<int> parts(touched.begin(), touched.end());
+    std::vector<char> domain(shell.triangle_count(), 0);
+    for (size_t t = 0; t < shell.triangle_count(); ++t) domain[t] = touched.count(decomposition.part_of_triangle[t]);
+    const Elements elements = make_elements(shell, {stroke}, domain);
+    const int stroke_element = elements.element_of_triangle[stroke.front()];
+    // Seed each touched part at its element most facing its direction, off the stroke.
+    std::vector<int> seeds, directions, region_part;
+    for (int p : parts) {
+        const Vec3& d = terms.directions.directions[decomposition.parts[p].direction];
+        int best = -1;
+        double best_cost = 1e300;
+        for (size_t t = 0; t < shell.triangle_count(); ++t) {
+            const int e = elements.element_of_triangle[t];
+            if (decomposition.part_of_triangle[t] != p || e == stroke_element) continue;
+            const double cost = -dot(shell.normal[t], d);
+            if (cost < best_cost) {
+                best_cost = cost;
+                best = e;
+            }
+        }
+        if (best < 0 || std::find(seeds.begin(), seeds.end(), best) != seeds.end()) continue;
+        seeds.push_back(best);
+        directions.push_back(decomposition.parts[p].direction);
+        region_part.push_back(p);
+    }
+    if (seeds.empty()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": the stroke covers whole parts");
+    const Regions regions = grow_regions(shell, terms, elements, seeds, directions, options.overlap_weight,
+                                         options.max_iterations, progress);
+    for (size_t t = 0; t < shell.triangle_count(); ++t)
+        if (domain[t]) decomposition.part_of_triangle[t] = region_part[regions.region_of_triangle[t]];
+    for (size_t r = 0; r < region_part.size(); ++r)
+        decomposition.parts[region_part[r]] =
+            parting_line(shell, terms, decomposition.part_of_triangle, region_part[r], regions.direction[r],
+                         options.weights);
+    return parts;
+}
+
+std::vector<int> apply_cut(const Shell& shell, const MoldabilityTerms& terms, const DecompositionOptions& options,
+                           const Edit& edit, const std::string& what, Decomposition& decomposition,
+                           Progress& progress) {
+    // Vertex adjacency with edge lengths, for the shortest paths between snapped points.
+    const size_t vertex_count = shell.outer.vertices.size();
+    std::vector<std::vector<uint32_t>> around(vertex_count);
+    for (const Triangle& f : shell.outer.triangles)
+        for (int k = 0; k < 3; ++k) around[f[k]].push_back(f[(k + 1) % 3]);
+    std::vector<uint32_t> snapped;
+    for (const Vec3& p : edit.points) snapped.push_back(nearest_vertex(shell, p));
+    if (edit.closed) snapped.push_back(snapped.front());
+    std::set<std::pair<uint32_t, uint32_t>> cut_edges;
+    for (size_t i = 0; i + 1 < snapped.size(); ++i) {
+        std::vector<double> distance(vertex_count, 1e300);
+        std::vector<uint32_t> previous(vertex_count, uint32_t(-1));
+        using Entry = std::pair<double, uint32_t>;
+        std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+        distance[snapped[i]] = 0;
+        queue.emplace(0.0, snapped[i]);
+        while (!queue.empty()) {
+            const auto [d, v] = queue.top();
+            queue.pop();
+            if (v == snapped[i + 1]) break;
+            if (d > distance[v]) continue;
+            for (uint32_t w : around[v]) {
+                const double nd = d + norm(shell.outer.vertices[w] - shell.outer.vertices[v]);
+                if (nd < distance[w]) {
+                    distance[w] = nd;
+                    previous[w] = v;
+                    queue.emplace(nd, w);
+                }
+            }
+        }
+        for (uint32_t v = snapped[i + 1]; v != snapped[i] && previous[v] != uint32_t(-1); v = previous[v])
+            cut_edges.insert(std::minmax(v, previous[v]));
+    }
+    std::set<int> crossed;
+    for (size_t t = 0; t < shell.triangle_count(); ++t) {
+        const Triangle& f = shell.outer.triangles[t];
+        for (int k = 0; k < 3; ++k)
+            if (cut_edges.count(std::minmax(f[k], f[(k + 1) % 3]))) crossed.insert(decomposition.part_of_triangle[t]);
+    }
+    std::vector<int> touched;
+    for (int p : crossed) {
+        const auto pieces = pieces_of(shell, triangles_of_part(decomposition, p), cut_edges);
+        if (pieces.size() < 2) continue;
+        touched.push_back(p);
+        for (size_t i = 1; i < pieces.size(); ++i) {
+            const int id = int(decomposition.parts.size());
+            decomposition.parts.emplace_back();
+            for (uint32_t t : pieces[i]) decomposition.part_of_triangle[t] = id;
+            touched.push_back(id);
+        }
+    }
+    if (touched.empty()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": the cut does not separate any part");
+    for (int p : touched)
+        decomposition.parts[p] = best_parting_line(shell, terms, decomposition.part_of_triangle, p, options.weights,
+                                                   progress);
+    return touched;
+}
+
+std::vector<int> apply_merge(const Shell& shell, const MoldabilityTerms& terms, const DecompositionOptions& options,
+                             const Edit& edit, const std::string& what, Decomposition& decomposition,
+                             Progress& progress) {
+    const int a = decomposition.part_of_triangle[nearest_triangle(shell, edit.points[0])];
+    const int b = decomposition.part_of_triangle[nearest_triangle(shell, edit.points[1])];
+    if (a == b) throw Error(FABVDB_ERR_BAD_INPUT, what + ": both points are on the same part");
+    bool neighbours = false;
+    for (size_t t = 0; t < shell.triangle_count() && !neighbours; ++t)
+        if (decomposition.part_of_triangle[t] == a)
+            for (int k = 0; k < 3; ++k) neighbours |= decomposition.part_of_triangle[shell.neighbor[t][k]] == b;
+    if (!neighbours) throw Error(FABVDB_ERR_BAD_INPUT, what + ": the two parts do not touch");
+    const int kept = std::min(a, b), gone = std::max(a, b);
+    for (int& p : decomposition.part_of_triangle)
+        if (p == gone) p = kept;
+    decomposition.parts[kept] =
+        best_parting_line(shell, terms, decomposition.part_of_triangle, kept, options.weights, progress);
+    return {kept, gone};
+}
+
+Vec3 read_point(const nlohmann::json& value, const std::string& what) {
+    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+        !value[2].is_number())
+        throw Error(FABVDB_ERR_BAD_INPUT, what + ": a point is not [x, y, z]");
+    return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
+}
+
+}  // namespace
+
+std::vector<Edit> read_edits(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(FABVDB_ERR_IO, path + ": cannot open the edits file");
+    nlohmann::json document;
+    try {
+        in >> document;
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(FABVDB_ERR_BAD_INPUT, path + ": not valid JSON (" + e.what() + ")");
+    }
+    if (!document.is_object() || !document.contains("edits") || !document["edits"].is_array())
+        throw Error(FABVDB_ERR_BAD_INPUT, path + ": expected an object with an \"edits\" array");
+    std::vector<Edit> edits;
+    for (size_t i = 0; i < document["edits"].size(); ++i) {
+        const nlohmann::json& item = document["edits"][i];
+        const std::string what = path + ": edit " + std::to_string(i + 1);
+        if (!item.is_object() || !item.contains("type") || !item["type"].is_string())
+            throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"type\"");
+        Edit edit;
+        const std::string type = item["type"];
+        if (type == "no_cut")
+            edit.type = Edit::no_cut;
+        else if (type == "cut")
+            edit.type = Edit::cut;
+        else if (type == "merge")
+            edit.type = Edit::merge;
+        else
+            throw Error(FABVDB_ERR_BAD_INPUT, what + ": unknown type \"" + type + "\" (no_cut, cut, merge)");
+        if (!item.contains("points") || !item["points"].is_array() || item["points"].empty())
+            throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"points\"");
+        for (const auto& p : item["points"]) edit.points.push_back(read_point(p, what));
+        if (edit.type == Edit::no_cut) {
+            if (!item.contains("radius") || !item["radius"].is_number() || !(item["radius"].get<double>() > 0))
+                throw Error(FABVDB_ERR_BAD_INPUT, what + ": a no_cut stroke needs \"radius\" > 0");
+            edit.radius = item["radius"];
+        }
+        if (edit.type == Edit::cut && edit.points.size() < 2)
+            throw Error(FABVDB_ERR_BAD_INPUT, what + ": a cut needs at least two points");
+        if (edit.type == Edit::merge && edit.points.size() != 2)
+            throw Error(FABVDB_ERR_BAD_INPUT, what + ": a merge needs exactly two points");
+        if (item.contains("closed")) {
+            if (!item["closed"].is_boolean()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": \"closed\" is not a boolean");
+            edit.closed = item["closed"];
+        }
+        edits.push_back(std::move(edit));
+    }
+    return edits;
+}
+
+nlohmann::json apply_edit(const Shell& shell, const MoldabilityTerms& terms, const DecompositionOptions& options,
+                          const Edit& edit, size_t index, Decomposition& decomposition, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::string what = "edit " + std::to_string(index + 1);
+    std::vector<int> touched;
+    const char* type = "";
+    switch (edit.type) {
+        case Edit::no_cut:
+            type = "no_cut";
+            touched = apply_no_cut(shell, terms, options, edit, what, decomposition, progress);
+            break;
+        case Edit::cut:
+            type = "cut";
+            touched = apply_cut(shell, terms, options, edit, what, decomposition, progress);
+            break;
+        case Edit::merge:
+            type = "merge";
+            touched = apply_merge(shell, terms, options, edit, what, decomposition, progress);
+            break;
+    }
+    drop_empty_parts(decomposition);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return {{"type", type},
+            {"parts_touched", touched},
+            {"parts_after", decomposition.parts.size()},
+            {"seconds", seconds},
+            {"total_moldability_energy", decomposition.total_energy()}};
+}
+
+}  // namespace fabvdb::surface

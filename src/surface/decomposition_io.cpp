@@ -1,0 +1,285 @@
+//! decomposition_io: JSON document, colour PLY files (binary little endian),
+//! polylines chained from edge sets, folder swapped in by rename.
+#include "surface/decomposition_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include "core/error.h"
+#include "surface/moldability_energy.h"
+#include "surface/vec3_ops.h"
+
+namespace fabvdb::surface {
+
+namespace {
+
+using Edge = std::pair<uint32_t, uint32_t>;
+
+//! Chains undirected edges into polylines (open chains first, from vertices of
+//! degree ≠ 2, then closed loops, which repeat their first vertex).
+std::vector<std::vector<uint32_t>> chain_edges(const std::vector<Edge>& edges) {
+    std::map<uint32_t, std::vector<size_t>> at;
+    for (size_t e = 0; e < edges.size(); ++e) {
+        at[edges[e].first].push_back(e);
+        at[edges[e].second].push_back(e);
+    }
+    std::vector<char> used(edges.size(), 0);
+    std::vector<std::vector<uint32_t>> chains;
+    const auto walk = [&](uint32_t start) {
+        std::vector<uint32_t> chain{start};
+        uint32_t v = start;
+        for (;;) {
+            size_t next = edges.size();
+            for (size_t e : at[v])
+                if (!used[e]) {
+                    next = e;
+                    break;
+                }
+            if (next == edges.size()) break;
+            used[next] = 1;
+            v = edges[next].first == v ? edges[next].second : edges[next].first;
+            chain.push_back(v);
+        }
+        chains.push_back(std::move(chain));
+    };
+    for (const auto& [v, list] : at)
+        if (list.size() != 2)
+            while (std::any_of(list.begin(), list.end(), [&](size_t e) { return !used[e]; })) walk(v);
+    for (size_t e = 0; e < edges.size(); ++e)
+        if (!used[e]) walk(edges[e].first);
+    return chains;
+}
+
+nlohmann::json polylines(const Shell& shell, const std::vector<Edge>& edges) {
+    nlohmann::json lines = nlohmann::json::array();
+    for (const auto& chain : chain_edges(edges)) {
+        nlohmann::json line = nlohmann::json::array();
+        for (uint32_t id : chain) line.push_back(corner_position(shell, id));
+        lines.push_back(std::move(line));
+    }
+    return lines;
+}
+
+std::array<uint8_t, 3> part_colour(size_t part) {
+    // Golden-angle hues: neighbouring ids get distinct colours.
+    const double hue = std::fmod(double(part) * 137.508, 360.0) / 60.0;
+    const double x = 1.0 - std::abs(std::fmod(hue, 2.0) - 1.0);
+    double r = 0, g = 0, b = 0;
+    switch (int(hue)) {
+        case 0: r = 1, g = x; break;
+        case 1: r = x, g = 1; break;
+        case 2: g = 1, b = x; break;
+        case 3: g = x, b = 1; break;
+        case 4: r = x, b = 1; break;
+        default: r = 1, b = x; break;
+    }
+    const auto level = [](double c) { return uint8_t(std::lround(60 + 195 * c)); };
+    return {level(r), level(g), level(b)};
+}
+
+//! Blue (0) to red (1) through green.
+std::array<uint8_t, 3> heat_colour(double value) {
+    value = std::clamp(value, 0.0, 1.0);
+    const double r = std::clamp(2.0 * value - 0.5, 0.0, 1.0);
+    const double g = 1.0 - std::abs(2.0 * value - 1.0);
+    const double b = std::clamp(1.5 - 2.0 * value, 0.0, 1.0);
+    return {uint8_t(std::lround(255 * r)), uint8_t(std::lround(255 * g)), uint8_t(std::lround(255 * b))};
+}
+
+void write_colour_ply(const std::string& path, const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
+                      const std::vector<std::array<uint8_t, 3>>& colours, const std::vector<float>* values) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw Error(FABVDB_ERR_IO, path + ": cannot write");
+    out << "ply\nformat binary_little_endian 1.0\ncomment written by fabvdb decompose\n"
+        << "element vertex " << vertices.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
+        << "element face " << triangles.size() << "\nproperty list uchar int vertex_indices\n"
+        << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+        << (values ? "property float deformation\n" : "") << "end_header\n";
+    for (const Vec3& p : vertices) {
+        const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
+        out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    }
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const uint8_t three = 3;
+        const int32_t index[3] = {int32_t(triangles[t][0]), int32_t(triangles[t][1]), int32_t(triangles[t][2])};
+        out.write(reinterpret_cast<const char*>(&three), 1);
+        out.write(reinterpret_cast<const char*>(index), sizeof index);
+        out.write(reinterpret_cast<const char*>(colours[t].data()), 3);
+        if (values) out.write(reinterpret_cast<const char*>(&(*values)[t]), sizeof(float));
+    }
+    if (!out) throw Error(FABVDB_ERR_IO, path + ": write failed");
+}
+
+//! Per S_low triangle: whether its outer face is in M⁺ of its part.
+std::vector<char> outer_upper(const Shell& shell, const Decomposition& decomposition) {
+    std::vector<char> upper(shell.triangle_count(), 1);
+    for (const PartMolding& part : decomposition.parts)
+        for (size_t i = 0; i < part.surface.size(); ++i)
+            if (part.surface.kind[i] == PartSurface::outer) upper[part.surface.source[i]] = part.upper[i];
+    return upper;
+}
+
+void write_parts_ply(const std::string& path, const Mesh& input, const Shell& shell,
+                     const Decomposition& decomposition) {
+    using K = CGAL::Simple_cartesian<double>;
+    std::vector<K::Triangle_3> triangles;
+    triangles.reserve(shell.triangle_count());
+    const auto point = [](const Vec3& p) { return K::Point_3(p[0], p[1], p[2]); };
+    for (const Triangle& f : shell.outer.triangles)
+        triangles.emplace_back(point(shell.outer.vertices[f[0]]), point(shell.outer.vertices[f[1]]),
+                               point(shell.outer.vertices[f[2]]));
+    using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
+    CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(triangles.begin(), triangles.end());
+    tree.accelerate_distance_queries();
+    const std::vector<char> upper = outer_upper(shell, decomposition);
+    std::vector<std::array<uint8_t, 3>> colours(input.triangles.size());
+    for (size_t t = 0; t < input.triangles.size(); ++t) {
+        const Triangle& f = input.triangles[t];
+        const Vec3 c = (1.0 / 3.0) * (input.vertices[f[0]] + input.vertices[f[1]] + input.vertices[f[2]]);
+        const size_t nearest = size_t(tree.closest_point_and_primitive(point(c)).second - triangles.cbegin());
+        auto colour = part_colour(size_t(decomposition.part_of_triangle[nearest]));
+        if (!upper[nearest])
+            for (auto& channel : colour) channel = uint8_t(channel * 0.55);
+        colours[t] = colour;
+    }
+    write_colour_ply(path, input.vertices, input.triangles, colours, nullptr);
+}
+
+void write_deformation_ply(const std::string& path, const Shell& shell, const MoldabilityTerms& terms,
+                           const Decomposition& decomposition, const DecompositionOptions& options) {
+    std::vector<double> share(shell.triangle_count(), 0.0);
+    for (const PartMolding& part : decomposition.parts)
+        moldability_energy(terms, part.surface, part.upper, part.direction, options.weights, &share);
+    std::vector<float> density(shell.triangle_count());
+    double highest = 0;
+    for (size_t t = 0; t < share.size(); ++t) {
+        density[t] = float(share[t] / std::max(shell.area[t], 1e-30));
+        highest = std::max(highest, double(density[t]));
+    }
+    std::vector<std::array<uint8_t, 3>> colours(share.size());
+    for (size_t t = 0; t < share.size(); ++t) colours[t] = heat_colour(highest > 0 ? density[t] / highest : 0.0);
+    write_colour_ply(path, shell.outer.vertices, shell.outer.triangles, colours, &density);
+}
+
+}  // namespace
+
+nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms& terms,
+                                      const Decomposition& decomposition, const DecompositionOptions& options) {
+    nlohmann::json doc;
+    doc["format"] = "fabvdb decomposition";
+    doc["version"] = 1;
+    doc["gamma"] = options.gamma;
+    doc["units"] = "mm; energies and the *_unit areas are in the unit-cube-scaled frame (lengths × unit_scale)";
+    doc["unit_scale"] = shell.unit_scale;
+    doc["shell_thickness"] = shell.thickness;
+    doc["draft_degrees"] = terms.draft * 180.0 / M_PI;
+    doc["weights"] = {{"w_H", options.weights.overhang},
+                      {"w_L", options.weights.overlap},
+                      {"w_O", options.overlap_weight},
+                      {"w_l", options.smoothness_weight}};
+    doc["total_moldability_energy"] = decomposition.total_energy();
+    doc["low_res_surface"] = {{"vertices", shell.outer.vertices},
+                              {"triangles", shell.outer.triangles},
+                              {"inner_vertices", shell.inner},
+                              {"thin_segment", shell.thin_segment},
+                              {"corner_ids", "a surface corner id v < vertices.size() is vertices[v]; "
+                                             "otherwise inner_vertices[v - vertices.size()]"}};
+    doc["part_of_triangle"] = decomposition.part_of_triangle;
+    nlohmann::json parts = nlohmann::json::array();
+    for (size_t p = 0; p < decomposition.parts.size(); ++p) {
+        const PartMolding& part = decomposition.parts[p];
+        const PartSurface& s = part.surface;
+        std::vector<uint32_t> prisms;
+        double area = 0, area_unit = 0;
+        for (size_t i = 0; i < s.size(); ++i)
+            if (s.kind[i] == PartSurface::outer) {
+                prisms.push_back(s.source[i]);
+                area_unit += s.area[i];
+            }
+        area = area_unit / (shell.unit_scale * shell.unit_scale);
+        // Parting line: edges between an M⁺ and an M⁻ triangle; part boundary:
+        // the outer edges of the prisms whose neighbour is in another part.
+        std::map<Edge, int> edge_labels;  // bit 1: M⁺ side seen, bit 2: M⁻ side seen
+        for (size_t i = 0; i < s.size(); ++i)
+            for (int k = 0; k < 3; ++k) {
+                const Edge e = std::minmax(s.corners[i][k], s.corners[i][(k + 1) % 3]);
+                edge_labels[e] |= part.upper[i] ? 1 : 2;
+            }
+        std::vector<Edge> parting, boundary;
+        for (const auto& [e, seen] : edge_labels)
+            if (seen == 3) parting.push_back(e);
+        for (uint32_t t : prisms)
+            for (int k = 0; k < 3; ++k)
+                if (decomposition.part_of_triangle[shell.neighbor[t][k]] != int(p)) {
+                    const Triangle& f = shell.outer.triangles[t];
+                    boundary.push_back(std::minmax(f[k], f[(k + 1) % 3]));
+                }
+        std::vector<int> kinds(s.kind.begin(), s.kind.end());
+        std::vector<int> upper(part.upper.begin(), part.upper.end());
+        parts.push_back({{"id", p},
+                         {"parting_direction", terms.directions.directions[part.direction]},
+                         {"moldability_energy", part.energy.total},
+                         {"overhang_energy", part.energy.overhang},
+                         {"overlap_energy", part.energy.overlap},
+                         {"area", area},
+                         {"area_unit", area_unit},
+                         {"prisms", prisms},
+                         {"surface",
+                          {{"triangles", s.corners},
+                           {"kind", kinds},
+                           {"kind_names", {"outer", "inner", "side"}},
+                           {"upper", upper}}},
+                         {"parting_lines", polylines(shell, parting)},
+                         {"boundaries", polylines(shell, boundary)}});
+    }
+    doc["parts"] = std::move(parts);
+    return doc;
+}
+
+void write_decomposition(const std::string& folder, const Mesh& input, const Shell& shell,
+                         const MoldabilityTerms& terms, const Decomposition& decomposition,
+                         const DecompositionOptions& options) {
+    namespace fs = std::filesystem;
+    const fs::path target = fs::path(folder).lexically_normal();
+    const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    std::error_code error;
+    if (!fs::is_directory(parent, error)) throw Error(FABVDB_ERR_IO, folder + ": the parent folder does not exist");
+    if (fs::exists(target, error) && !fs::is_directory(target, error))
+        throw Error(FABVDB_ERR_IO, folder + ": exists and is not a folder");
+    std::mt19937_64 random(std::random_device{}());
+    const std::string stem = target.filename().string();
+    const fs::path temporary = parent / ("." + stem + ".tmp-" + std::to_string(random() % 1000000000));
+    if (!fs::create_directory(temporary, error)) throw Error(FABVDB_ERR_IO, temporary.string() + ": cannot create");
+    try {
+        const std::string json_path = (temporary / "decomposition.json").string();
+        std::ofstream json(json_path);
+        json << decomposition_document(shell, terms, decomposition, options).dump(1) << "\n";
+        if (!json) throw Error(FABVDB_ERR_IO, json_path + ": write failed");
+        json.close();
+        write_parts_ply((temporary / "decomposition.ply").string(), input, shell, decomposition);
+        write_deformation_ply((temporary / "deformation.ply").string(), shell, terms, decomposition, options);
+        const fs::path old = parent / ("." + stem + ".old-" + std::to_string(random() % 1000000000));
+        const bool replacing = fs::exists(target, error);
+        if (replacing) fs::rename(target, old);
+        fs::rename(temporary, target);
+        if (replacing) fs::remove_all(old, error);
+    } catch (const fs::filesystem_error& e) {
+        fs::remove_all(temporary, error);
+        throw Error(FABVDB_ERR_IO, folder + ": " + e.what());
+    } catch (...) {
+        fs::remove_all(temporary, error);
+        throw;
+    }
+}
+
+}  // namespace fabvdb::surface

@@ -1,0 +1,44 @@
+//! The per-direction moldability terms of the thesis (§3.4.2, §3.4.5), computed
+//! once for the 162 candidate parting directions: the overhang term U(t, d) of
+//! an outer triangle, and for each of the 81 direction axes (d and −d project
+//! alike) every pair of outer triangles whose projections along the axis
+//! overlap with (n₁·d)(n₂·d) ≥ 0, with the overlap area |p_d(t₁) ∩ p_d(t₂)|.
+//! Pairs are found with bounding-box early rejection on a 2-D grid and their
+//! areas by convex clipping; axes are processed in parallel (TBB).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/icosphere.h"
+#include "core/progress.h"
+#include "surface/shell.h"
+
+namespace fabvdb::surface {
+
+struct MoldabilityTerms {
+    SphereDirections directions;          //!< the 162 candidates
+    std::vector<int> axis_of_direction;   //!< direction index -> axis index (81 axes)
+    std::vector<Vec3> axes;               //!< one direction of each opposite pair
+    //! Per axis, per outer triangle (CSR): the triangles its projection overlaps
+    //! and the overlap areas in unit-cube units (each pair listed from both sides).
+    struct Overlaps {
+        std::vector<uint32_t> offset;
+        std::vector<uint32_t> partner;
+        std::vector<float> area;
+    };
+    std::vector<Overlaps> overlaps;
+    size_t pair_count = 0;  //!< overlapping pairs summed over the axes
+    double draft = 0;       //!< draft angle φ in radians
+
+    const Overlaps& overlaps_along(int direction) const { return overlaps[axis_of_direction[direction]]; }
+};
+
+//! Throws Error(CANCELLED) via `progress`.
+MoldabilityTerms compute_moldability_terms(const Shell& shell, double draft_radians, Progress& progress);
+
+//! U(t, d) of the thesis for a visible triangle of unit normal n and area `area`:
+//! −cos(min(θ + φ, π))·|p_d(t)| when θ = ∠(n, d) > π/2 − φ, else 0.
+double overhang_term(const Vec3& n, double area, const Vec3& d, double draft);
+
+}  // namespace fabvdb::surface

@@ -1,0 +1,38 @@
+//! The closed surface of one part of the decomposition: the outer triangles of
+//! its prisms (from S_low), their inner images (T_in, reversed to face out of
+//! the material) and the triangulated side quads along the part's boundary
+//! edges (T_side). Each surface triangle carries its kind, source, unit normal,
+//! unit-cube area and edge-adjacent surface triangles.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "surface/shell.h"
+
+namespace fabvdb::surface {
+
+struct PartSurface {
+    enum Kind : uint8_t { outer, inner, side };
+    std::vector<Kind> kind;
+    //! outer/inner: the S_low triangle; side: 3·t + k for the edge (v[k], v[k+1]) of t.
+    std::vector<uint32_t> source;
+    //! Corner ids: v < V is outer vertex v, V + v is inner vertex f_V(v).
+    std::vector<std::array<uint32_t, 3>> corners;
+    std::vector<Vec3> normal;
+    std::vector<double> area;
+    std::vector<std::vector<uint32_t>> adjacent;
+    size_t size() const { return kind.size(); }
+};
+
+//! The surface of the part made of the outer triangles t with part_of_triangle[t] == part.
+PartSurface part_surface(const Shell& shell, const std::vector<int>& part_of_triangle, int part);
+
+//! Position of a corner id of a PartSurface.
+inline const Vec3& corner_position(const Shell& shell, uint32_t id) {
+    const size_t v = shell.outer.vertices.size();
+    return id < v ? shell.outer.vertices[id] : shell.inner[id - v];
+}
+
+}  // namespace fabvdb::surface

@@ -1,0 +1,38 @@
+//! The parting line of one part (thesis §3.4.4): a graph cut over the part's
+//! closed surface (Boykov–Kolmogorov max-flow) labels each triangle M⁺ (top
+//! mold) or M⁻ (bottom mold) with the unary costs 1 + n·d (for M⁻) and
+//! 1 − n·d (for M⁺), zero on inner triangles, and the binary cost
+//! max(0, n₀·n₁) across each edge. The connectivity fix-up then splits the
+//! labels by overlap, builds the graph of their connected components with the
+//! asymmetric cost |p_d(c)| of relabelling a component, fixes the largest M⁺
+//! and M⁻ components (projected area), and in decreasing projected area joins
+//! every other component to the nearer of the two along the cheapest path,
+//! relabelling and fixing the path — so M⁺ and M⁻ are each one connected piece.
+#pragma once
+
+#include <vector>
+
+#include "core/progress.h"
+#include "surface/moldability_energy.h"
+#include "surface/part_surface.h"
+
+namespace fabvdb::surface {
+
+struct PartMolding {
+    int direction = 0;        //!< parting direction d (index into terms.directions)
+    PartSurface surface;
+    std::vector<char> upper;  //!< per surface triangle: in M⁺
+    MoldabilityEnergy energy;
+};
+
+//! Parting line of `part` for the given direction.
+PartMolding parting_line(const Shell& shell, const MoldabilityTerms& terms, const std::vector<int>& part_of_triangle,
+                         int part, int direction, const MoldabilityWeights& weights);
+
+//! argmin_{d∈D} E_P(P, d) with the part fixed (used after cut and merge edits,
+//! §3.5): the parting line for every candidate direction, in parallel.
+PartMolding best_parting_line(const Shell& shell, const MoldabilityTerms& terms,
+                              const std::vector<int>& part_of_triangle, int part, const MoldabilityWeights& weights,
+                              Progress& progress);
+
+}  // namespace fabvdb::surface

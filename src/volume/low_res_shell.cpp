@@ -1,0 +1,62 @@
+//! low_res_shell: signed_distance_from_mesh → low_res_surface → shell_prisms,
+//! with the voxel size from the S_low edge length (and ω) and a narrow band
+//! deep enough for the medial depths the thin-feature test needs.
+#include "volume/low_res_shell.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "volume/low_res_surface.h"
+#include "volume/shell_prisms.h"
+#include "volume/signed_distance.h"
+
+namespace fabvdb::volume {
+
+LowResShell low_res_shell(const Mesh& input, const LowResShellOptions& options, Progress& progress) {
+    if (input.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": the mesh has no triangles");
+    if (!options.solid && !(options.thickness > 0))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the shell thickness must be > 0");
+    LowResShell result;
+    auto start = std::chrono::steady_clock::now();
+    const auto lap = [&](const char* name) {
+        const auto now = std::chrono::steady_clock::now();
+        result.seconds[name] = std::chrono::duration<double>(now - start).count();
+        start = now;
+    };
+    double area = 0;
+    for (const Triangle& t : input.triangles) {
+        const Vec3& a = input.vertices[t[0]];
+        const Vec3& b = input.vertices[t[1]];
+        const Vec3& c = input.vertices[t[2]];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+        area += 0.5 * std::sqrt(x * x + y * y + z * z);
+    }
+    const BoundingBox box = bounding_box(input);
+    const double extent = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
+    const double edge = edge_length_for_triangles(area, options.target_triangles);
+    const double max_depth = options.solid ? 0.5 * extent : 2.0 * options.thickness;
+    result.thickness = options.solid ? max_depth : options.thickness;
+    result.voxel_size = options.solid ? 0.5 * edge : std::min(0.5 * edge, options.thickness / 3.0);
+    result.half_band_voxels = int(std::ceil(max_depth / result.voxel_size)) + 3;
+
+    SignedDistanceOptions sdf;
+    sdf.voxel_size = result.voxel_size;
+    sdf.half_band_voxels = result.half_band_voxels;
+    sdf.memory_budget_bytes = options.memory_budget_bytes;
+    sdf.input_name = options.input_name;
+    const openvdb::FloatGrid::Ptr grid = signed_distance_from_mesh(input, sdf, progress);
+    lap("signed_distance");
+    result.outer = low_res_surface(*grid, options.target_triangles, progress);
+    lap("low_res_surface");
+    ShellPrisms prisms = shell_prisms(*grid, result.outer.vertices, result.thickness, max_depth, progress);
+    result.inner = std::move(prisms.inner);
+    result.depth = std::move(prisms.depth);
+    lap("shell_prisms");
+    return result;
+}
+
+}  // namespace fabvdb::volume
