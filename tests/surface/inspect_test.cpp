@@ -234,6 +234,19 @@ TEST(Inspect, NegativeZeroIsTheSamePositionAsZero) {
     EXPECT_EQ(r["self_intersecting_pairs"], 0);   // they share positions
 }
 
+TEST(Inspect, MeshWithoutTrianglesIsNotClosed) {
+    Mesh mesh;
+    mesh.vertices = {{1, 2, 3}, {4, 5, 6}};
+    const json r = inspect(mesh);
+    EXPECT_EQ(r["triangles"], 0);
+    EXPECT_EQ(r["unreferenced_vertices"], 2);
+    EXPECT_EQ(r["components"], 0);
+    EXPECT_FALSE(r["closed"].get<bool>());
+    EXPECT_TRUE(r["volume"].is_null());
+    EXPECT_TRUE(r["genus"].is_null());
+    EXPECT_EQ(r["self_intersecting_pairs"], 0);
+}
+
 TEST(Inspect, UnreferencedVerticesAreCountedButNotInTheBox) {
     Mesh box = fabvdb::test::make_box({0, 0, 0}, {1, 1, 1});
     box.vertices.push_back({50, 50, 50});
