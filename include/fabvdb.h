@@ -213,6 +213,75 @@ FABVDB_API void fabvdb_volume_free(fabvdb_volume* volume);
 /* ------------------------------------------------------------------------- */
 /* Mold decomposition (fabvdb decompose)                                      */
 /* ------------------------------------------------------------------------- */
+/* Bits of fabvdb_decompose_options.flags. (since 0.1) */
+/* Cast solid parts: every prism reaches the medial axis instead of a shell of
+ * thickness shell_thickness (thin-feature detection is then moot). */
+#define FABVDB_DECOMPOSE_SOLID 1u
+
+/* Parameters of the mold decomposition (thesis chapter 3). Energies and gamma
+ * are measured on the model scaled so that its longest bounding-box side is 1
+ * (the thesis' unit cube), so the defaults suit any size. Fill with
+ * fabvdb_decompose_options_init(). (since 0.1) */
+typedef struct fabvdb_decompose_options {
+    size_t struct_size;       /* sizeof(fabvdb_decompose_options), set by _init */
+    unsigned flags;           /* FABVDB_DECOMPOSE_* bits; default 0 */
+    double shell_thickness;   /* omega, mm, >= 0; 0 (default): 0.03 x the longest bounding-box side */
+    double gamma;             /* threshold on the total moldability energy (unit-cube area); default 0.05 */
+    int parts;                /* >= 0; 0 (default): automatic, from 2 up until the energy is under gamma */
+    int max_parts;            /* cap of the automatic search, >= 2; default 16 */
+    double draft_degrees;     /* draft angle phi, [0, 30]; default 1 */
+    double w_overhang;        /* w_H, >= 0; default 1 */
+    double w_overlap;         /* w_L, >= 0; default 1 */
+    double w_coarse_overlap;  /* w_O (overlap penalty of region growing), >= 0; default 1e6 */
+    double w_smooth;          /* w_l (boundary smoothness), >= 0; default 1 */
+    int low_res_triangles;    /* N_Delta, the size of the surface the decomposition runs on, >= 100;
+                                 default 10000 */
+    int smoothing_iterations; /* boundary-smoothing (snake) iterations, >= 0; default 10 */
+} fabvdb_decompose_options;
+
+/* Fills *options with the defaults above and sets struct_size. NULL does
+ * nothing. Thread-safe. (since 0.1) */
+FABVDB_API void fabvdb_decompose_options_init(fabvdb_decompose_options* options);
+
+/* Decomposes the thin shell of a free-form solid (or, with
+ * FABVDB_DECOMPOSE_SOLID, the solid) into parts that can each be cast in a
+ * two-piece rigid mold, with a parting direction and a parting line per part
+ * (the method of the thesis' chapter 3: low-resolution surface and prisms
+ * from the robust level set, thin features cast solid, region growing with
+ * the moldability cost, graph-cut parting lines made connected, boundary
+ * smoothing, then the user's edits).
+ * mesh: borrowed; may be dirty (it goes through the robust signed distance).
+ * opts: NULL for the defaults.
+ * edits_path: NULL, or a JSON file of edits applied in order after the
+ *   automatic decomposition, in world coordinates (README "fabvdb decompose"):
+ *   {"edits": [{"type": "no_cut", "points": [[x,y,z],...], "radius": r},
+ *              {"type": "cut", "points": [[x,y,z],...]},
+ *              {"type": "merge", "points": [[x,y,z],[x,y,z]]},
+ *              {"type": "smooth", "points": [[x,y,z],...], "radius": r}]}.
+ *   Each edit recomputes only the parts it touches.
+ * out_dir: folder that receives decomposition.json, decomposition.ply and
+ *   deformation.ply; written as a new folder beside it and renamed into place
+ *   at the end (an existing folder of that name is replaced), so a failed or
+ *   cancelled call leaves no partial folder.
+ * out_report: NULL, or receives a report (owned by the caller) with gamma,
+ *   shell_thickness, unit_scale, low_res {triangles, thin_segments, voxel_size,
+ *   ...}, overlap_pairs, attempts [{parts, iterations,
+ *   region_cost_per_iteration, moldability_energy, seconds_per_iteration}],
+ *   smoothing {iterations, energy_per_iteration}, edits [{type, parts_touched,
+ *   seconds, energy, warning}], part_count, parts [{id, parting_direction,
+ *   moldability_energy, area}], total_moldability_energy, under_gamma,
+ *   warnings [text], seconds {stage: seconds}.
+ * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle or out_dir, an
+ * option out of range, struct_size too small); FABVDB_ERR_BAD_INPUT (a mesh
+ * that encloses no volume, a malformed edits file or an edit that does not
+ * apply, e.g. a merge of two points on the same part); FABVDB_ERR_IO (the
+ * edits file or out_dir's parent cannot be read or written);
+ * FABVDB_ERR_OUT_OF_BUDGET; FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY.
+ * The report is untouched on failure. Reports progress. A context is used by
+ * one thread at a time. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                               const fabvdb_decompose_options* opts, const char* edits_path,
+                                               const char* out_dir, fabvdb_report** out_report);
 
 #ifdef __cplusplus
 }

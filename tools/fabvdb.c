@@ -8,6 +8,7 @@
 
 static const cli_command* const commands[] = {
     &cmd_info,
+    &cmd_decompose,
     &cmd_batch,
 };
 static const size_t command_count = sizeof(commands) / sizeof(commands[0]);
