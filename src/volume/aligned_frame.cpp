@@ -1,0 +1,55 @@
+//! The frame aligned with a direction (see aligned_frame.h).
+#include "volume/aligned_frame.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+Vec3 normalized(const Vec3& v) {
+    const double length = std::sqrt(dot(v, v));
+    return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+}  // namespace
+
+Vec3 AlignedFrame::to_frame(const Vec3& world) const { return {dot(world, e1), dot(world, e2), dot(world, d)}; }
+
+Vec3 AlignedFrame::to_world(const Vec3& local) const {
+    Vec3 world;
+    for (int k = 0; k < 3; ++k) world[k] = local[0] * e1[k] + local[1] * e2[k] + local[2] * d[k];
+    return world;
+}
+
+AlignedFrame aligned_frame(const Vec3& direction) {
+    const double length = std::sqrt(dot(direction, direction));
+    if (!std::isfinite(length) || length == 0.0)
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the parting direction must be a finite non-zero vector");
+    AlignedFrame frame;
+    frame.d = normalized(direction);
+    int least = 0;
+    for (int k = 1; k < 3; ++k)
+        if (std::abs(frame.d[k]) < std::abs(frame.d[least])) least = k;
+    Vec3 axis{0, 0, 0};
+    axis[least] = 1.0;
+    frame.e1 = normalized(cross(axis, frame.d));
+    frame.e2 = cross(frame.d, frame.e1);
+    return frame;
+}
+
+Mesh rotate_mesh(const Mesh& mesh, const AlignedFrame& frame, bool inverse) {
+    Mesh out = mesh;
+    for (Vec3& p : out.vertices) p = inverse ? frame.to_world(p) : frame.to_frame(p);
+    return out;
+}
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,151 @@
+//! Moldability enforcement by sweeping (see sweep.h).
+#include "volume/sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/Dense.h>
+#include <openvdb/tools/GridTransformer.h>
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetMeasure.h>
+#include <openvdb/tools/Prune.h>
+
+#include "core/error.h"
+#include "volume/aligned_frame.h"
+#include "volume/progress_interrupter.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+void require_level_set(const openvdb::FloatGrid& grid, const char* what) {
+    if (grid.getGridClass() != openvdb::GRID_LEVEL_SET || !grid.hasUniformVoxels())
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, std::string(what) + " is not a level set with uniform voxels");
+}
+
+openvdb::FloatGrid::Ptr resampled(const openvdb::FloatGrid& grid, const openvdb::math::Transform::Ptr& transform,
+                                  float background, ProgressInterrupter& interrupter, const Progress& progress) {
+    auto out = openvdb::FloatGrid::create(background);
+    out->setTransform(transform);
+    out->setGridClass(openvdb::GRID_LEVEL_SET);
+    openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(grid, *out, interrupter);
+    progress.check();
+    return out;
+}
+
+// Each column of the dense block (z is contiguous) becomes the hull of where
+// it is inside: max(running min from below, running min from above).
+void sweep_columns(openvdb::tools::Dense<float>& dense, const Progress& progress) {
+    const openvdb::Coord dim = dense.bbox().dim();
+    const size_t nz = size_t(dim.z()), columns = size_t(dim.x()) * size_t(dim.y());
+    float* data = dense.data();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, columns), [&](const tbb::blocked_range<size_t>& range) {
+        if (progress.cancelled()) return;
+        std::vector<float> from_below(nz);
+        for (size_t c = range.begin(); c != range.end(); ++c) {
+            float* column = data + c * nz;
+            float running = column[0];
+            for (size_t k = 0; k < nz; ++k) from_below[k] = running = std::min(running, column[k]);
+            running = column[nz - 1];
+            for (size_t k = nz; k-- > 0;) {
+                running = std::min(running, column[k]);
+                column[k] = std::max(from_below[k], running);
+            }
+        }
+    });
+    progress.check();
+}
+
+}  // namespace
+
+openvdb::math::Transform::Ptr aligned_transform(double voxel_size, const Vec3& direction) {
+    const AlignedFrame frame = aligned_frame(direction);
+    // OpenVDB maps index to world as a row vector times the matrix: row k is
+    // the world image of index axis k.
+    openvdb::math::Mat4d matrix = openvdb::math::Mat4d::identity();
+    for (int k = 0; k < 3; ++k) {
+        matrix(0, k) = voxel_size * frame.e1[k];
+        matrix(1, k) = voxel_size * frame.e2[k];
+        matrix(2, k) = voxel_size * frame.d[k];
+    }
+    return openvdb::math::Transform::createLinearTransform(matrix);
+}
+
+openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part, const Vec3& direction,
+                                                  const std::vector<openvdb::FloatGrid::ConstPtr>& keep_out,
+                                                  const SweepOptions& options, Progress& progress,
+                                                  SweepStats* stats) {
+    require_level_set(part, "the part");
+    for (const auto& solid : keep_out) {
+        if (!solid) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "a keep-out solid is null");
+        require_level_set(*solid, "a keep-out solid");
+    }
+    const double voxel = part.voxelSize()[0];
+    const float background = part.background();
+    const openvdb::math::Transform::Ptr transform = aligned_transform(voxel, direction);
+    ProgressInterrupter interrupter(progress);
+
+    progress.stage("sweep: resample to the parting direction");
+    openvdb::FloatGrid::Ptr aligned = resampled(part, transform, background, interrupter, progress);
+    SweepStats figures;
+    figures.volume_before = openvdb::tools::levelSetVolume(*aligned);
+    if (aligned->activeVoxelCount() == 0) throw Error(FABVDB_ERR_BAD_INPUT, "the part to sweep is empty");
+
+    progress.stage("sweep: columns");
+    openvdb::CoordBBox box = aligned->evalActiveVoxelBoundingBox();
+    box.expand(1);
+    const uint64_t dense_bytes = uint64_t(box.volume()) * sizeof(float);
+    if (options.memory_budget_bytes && dense_bytes > options.memory_budget_bytes)
+        throw Error(FABVDB_ERR_OUT_OF_BUDGET, "sweeping the part needs " + std::to_string(dense_bytes >> 20) +
+                                                  " MiB of column buffer, over the memory budget");
+    openvdb::FloatGrid::Ptr swept;
+    {
+        openvdb::tools::Dense<float> dense(box);
+        openvdb::tools::copyToDense(*aligned, dense);
+        progress.update(0.3);
+        sweep_columns(dense, progress);
+        progress.update(0.6);
+        swept = openvdb::FloatGrid::create(background);
+        swept->setTransform(transform);
+        openvdb::tools::copyFromDense(dense, *swept, 0.0f);
+        progress.check();
+    }
+    // The band again: values at or beyond the background become inactive
+    // inside/outside values. The column order of signs, which makes the
+    // double height field, is kept exactly (a rebuild through a mesh would
+    // move the surface by a fraction of a voxel and could break it).
+    for (auto value = swept->beginValueOn(); value; ++value)
+        if (std::abs(*value) >= background) {
+            value.setValue(*value < 0 ? -background : background);
+            value.setValueOff();
+        }
+    openvdb::tools::pruneLevelSet(swept->tree());
+    progress.check();
+    swept->setGridClass(openvdb::GRID_LEVEL_SET);
+    figures.volume_swept = openvdb::tools::levelSetVolume(*swept);
+
+    if (!keep_out.empty()) {
+        progress.stage("sweep: keep out of other parts");
+        openvdb::FloatGrid::Ptr others;
+        for (size_t i = 0; i < keep_out.size(); ++i) {
+            openvdb::FloatGrid::Ptr solid = resampled(*keep_out[i], transform, background, interrupter, progress);
+            if (!others) others = solid;
+            else openvdb::tools::csgUnion(*others, *solid);
+            progress.update(double(i + 1) / double(keep_out.size()));
+        }
+        openvdb::tools::csgDifference(*swept, *others);
+        progress.check();
+    }
+    figures.volume_after = openvdb::tools::levelSetVolume(*swept);
+    figures.added_volume = figures.volume_after - figures.volume_before;
+    figures.removed_by_keep_out = figures.volume_swept - figures.volume_after;
+    if (stats) *stats = figures;
+    return swept;
+}
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,159 @@
+// Moldability enforcement by sweeping: a ring standing on its side (a torus
+// whose axis is perpendicular to d, so lines along d cross it four times)
+// becomes a double height field along d that still contains the ring; the
+// added volume avoids a keep-out solid; checked on the grid's columns and by
+// ray casting on the extracted mesh, not by anything the sweep computed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <openvdb/tools/MeshToVolume.h>
+
+#include "core/error.h"
+#include "support/ray_cast.h"
+#include "support/shapes.h"
+#include "volume/extract_mesh.h"
+#include "volume/sweep.h"
+
+namespace {
+
+using fabvdb::Mesh;
+using fabvdb::Vec3;
+
+openvdb::FloatGrid::Ptr level_set(const Mesh& mesh, double voxel) {
+    std::vector<openvdb::Vec3s> points;
+    std::vector<openvdb::Vec3I> triangles;
+    for (const Vec3& p : mesh.vertices) points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
+    for (const auto& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
+    auto transform = openvdb::math::Transform::createLinearTransform(voxel);
+    return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles, 3.0f);
+}
+
+// A torus around the y axis (a ring standing up in the xz plane).
+Mesh standing_ring() {
+    Mesh ring = fabvdb::test::make_torus({0, 0, 0}, 10.0, 3.0, 48, 24);
+    for (Vec3& p : ring.vertices) p = {p[0], -p[2], p[1]};
+    return ring;
+}
+
+Vec3 normalized(const Vec3& v) {
+    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+class Sweep : public ::testing::TestWithParam<Vec3> {
+protected:
+    static void SetUpTestSuite() { openvdb::initialize(); }
+};
+
+TEST_P(Sweep, RingBecomesDoubleHeightFieldContainingIt) {
+    const Vec3 d = normalized(GetParam());
+    const Mesh ring = standing_ring();
+    // Premise: the ring is not a double height field along d.
+    EXPECT_GT(fabvdb::test::check_double_height_field(ring, d, 40).lines_over_two, 10u);
+
+    fabvdb::Progress progress;
+    fabvdb::volume::SweepStats stats;
+    auto swept = fabvdb::volume::sweep_double_height_field(*level_set(ring, 0.4), d, {}, {}, progress, &stats);
+    const Mesh result = fabvdb::volume::extract_mesh(*swept, 0.0, progress);
+
+    // On the grid: its index z axis is d, and along every index column the
+    // inside (negative) voxels form one run.
+    const openvdb::Vec3d axis =
+        swept->transform().indexToWorld(openvdb::Vec3d(0, 0, 1)) - swept->transform().indexToWorld(openvdb::Vec3d(0));
+    EXPECT_NEAR(axis.dot(openvdb::Vec3d(d[0], d[1], d[2])), axis.length(), 1e-9 * axis.length());
+    const openvdb::CoordBBox box = swept->evalActiveVoxelBoundingBox();
+    auto access = swept->getConstAccessor();
+    size_t columns = 0, split_columns = 0;
+    for (int i = box.min().x(); i <= box.max().x(); ++i)
+        for (int j = box.min().y(); j <= box.max().y(); ++j) {
+            int runs = 0;
+            bool inside = false;
+            for (int k = box.min().z() - 1; k <= box.max().z() + 1; ++k) {
+                const bool now = access.getValue(openvdb::Coord(i, j, k)) < 0;
+                runs += now && !inside;
+                inside = now;
+            }
+            columns += runs > 0;
+            split_columns += runs > 1;
+        }
+    EXPECT_GT(columns, 500u);
+    EXPECT_EQ(split_columns, 0u);
+
+    // The extracted surface is closed and, but for voxel-scale corners of the
+    // extraction, a double height field too.
+    ASSERT_TRUE(fabvdb::test::closed_two_manifold(result));
+    const auto check = fabvdb::test::check_double_height_field(result, d, 80);
+    EXPECT_GT(check.lines, 1000u);
+    EXPECT_LE(check.lines_over_two, check.lines / 500) << "max crossings " << check.max_crossings;
+    EXPECT_EQ(check.odd_lines, 0u);
+
+    // The result contains the ring: points well inside the ring are inside it.
+    fabvdb::test::LineCaster inside_result(result, {0.31, 0.17, 0.93});
+    for (int i = 0; i < 64; ++i) {
+        const double u = 2 * M_PI * i / 64;
+        const Vec3 tube_center{10 * std::cos(u), 0.0, 10 * std::sin(u)};
+        EXPECT_TRUE(inside_result.inside(tube_center)) << "tube point " << i;
+    }
+    const double ring_volume = fabvdb::test::mesh_volume(ring);
+    const double result_volume = fabvdb::test::mesh_volume(result);
+    EXPECT_GT(result_volume, 1.2 * ring_volume);
+    EXPECT_NEAR(stats.volume_before, ring_volume, 0.03 * ring_volume);
+    EXPECT_NEAR(stats.volume_after, result_volume, 0.02 * result_volume);
+    EXPECT_NEAR(stats.added_volume, result_volume - ring_volume, 0.05 * (result_volume - ring_volume));
+}
+
+INSTANTIATE_TEST_SUITE_P(Directions, Sweep,
+                         ::testing::Values(Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0.3}, Vec3{0.3, -0.2, 1}));
+
+TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
+    openvdb::initialize();
+    const Mesh ring = standing_ring();
+    // A block filling the middle of the ring's hole, where the sweep adds volume.
+    const Mesh block = fabvdb::test::make_box({-4, -2, -4}, {4, 2, 4});
+    fabvdb::Progress progress;
+    fabvdb::volume::SweepStats stats;
+    openvdb::FloatGrid::ConstPtr keep_out = level_set(block, 0.4);
+    auto swept = fabvdb::volume::sweep_double_height_field(*level_set(ring, 0.4), {0, 0, 1}, {keep_out}, {},
+                                                           progress, &stats);
+    const Mesh result = fabvdb::volume::extract_mesh(*swept, 0.0, progress);
+    ASSERT_TRUE(fabvdb::test::closed_two_manifold(result));
+    fabvdb::test::LineCaster caster(result, {0.31, 0.17, 0.93});
+    for (double x = -3.5; x <= 3.5; x += 0.5)
+        for (double z = -3.5; z <= 3.5; z += 0.5) EXPECT_FALSE(caster.inside({x, 0.1, z})) << x << " " << z;
+    // Outside the block, the hole is still filled.
+    EXPECT_TRUE(caster.inside({6.0, 0.1, 0.0}));
+    EXPECT_GT(stats.removed_by_keep_out, 0.8 * 8 * 4 * 8);
+}
+
+TEST(SweepErrors, RejectsZeroDirectionAndFogVolumes) {
+    openvdb::initialize();
+    fabvdb::Progress progress;
+    auto part = level_set(fabvdb::test::make_box({0, 0, 0}, {2, 2, 2}), 0.5);
+    EXPECT_THROW(fabvdb::volume::sweep_double_height_field(*part, {0, 0, 0}, {}, {}, progress), fabvdb::Error);
+    openvdb::FloatGrid fog;
+    EXPECT_THROW(fabvdb::volume::sweep_double_height_field(fog, {0, 0, 1}, {}, {}, progress), fabvdb::Error);
+    fabvdb::volume::SweepOptions tight;
+    tight.memory_budget_bytes = 1000;
+    try {
+        fabvdb::volume::sweep_double_height_field(*part, {0, 0, 1}, {}, tight, progress);
+        FAIL() << "expected a budget error";
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_OUT_OF_BUDGET);
+    }
+}
+
+TEST(SweepErrors, CancelledSweepThrowsCancelled) {
+    openvdb::initialize();
+    std::atomic<bool> cancel{true};
+    fabvdb::Progress progress(nullptr, nullptr, &cancel);
+    auto part = level_set(standing_ring(), 0.5);
+    try {
+        fabvdb::volume::sweep_double_height_field(*part, {0, 0, 1}, {}, {}, progress);
+        FAIL() << "expected cancellation";
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
+    }
+}
+
+}  // namespace
