@@ -1,0 +1,173 @@
+//! A two-piece mold around one part (see mold_assembly.h).
+#include "surface/mold_assembly.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "surface/face_sweep.h"
+#include "surface/height_field_solid.h"
+#include "surface/mesh_boolean.h"
+#include "surface/parting_surface.h"
+#include "volume/aligned_frame.h"
+
+namespace fabvdb::surface {
+
+namespace {
+
+double normal_z(const Mesh& mesh, const Triangle& t) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+// Vertices shared by an upward- and a downward-facing triangle: the part's
+// silhouette along Z, which is its parting line.
+std::vector<Vec3> silhouette(const Mesh& part) {
+    std::vector<char> up(part.vertices.size(), 0), down(part.vertices.size(), 0);
+    for (const Triangle& t : part.triangles) {
+        const bool faces_up = normal_z(part, t) > 0;
+        for (uint32_t v : t) (faces_up ? up : down)[v] = 1;
+    }
+    std::vector<Vec3> points;
+    for (size_t v = 0; v < part.vertices.size(); ++v)
+        if (up[v] && down[v]) points.push_back(part.vertices[v]);
+    return points;
+}
+
+// Lowest and highest z where the vertical line through (x, y) meets the part;
+// false when it misses.
+bool column_extent(const Mesh& part, double x, double y, double& z_lo, double& z_hi) {
+    bool hit = false;
+    for (const Triangle& t : part.triangles) {
+        const Vec3 &a = part.vertices[t[0]], &b = part.vertices[t[1]], &c = part.vertices[t[2]];
+        if (x < std::min({a[0], b[0], c[0]}) || x > std::max({a[0], b[0], c[0]}) ||
+            y < std::min({a[1], b[1], c[1]}) || y > std::max({a[1], b[1], c[1]}))
+            continue;
+        const double det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        if (det == 0.0) continue;
+        const double u = ((x - a[0]) * (c[1] - a[1]) - (y - a[1]) * (c[0] - a[0])) / det;
+        const double v = ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])) / det;
+        if (u < 0 || v < 0 || u + v > 1) continue;
+        const double z = a[2] + u * (b[2] - a[2]) + v * (c[2] - a[2]);
+        z_lo = hit ? std::min(z_lo, z) : z;
+        z_hi = hit ? std::max(z_hi, z) : z;
+        hit = true;
+    }
+    return hit;
+}
+
+Mesh box_mesh(const Vec3& lo, const Vec3& hi) {
+    Mesh box;
+    for (int i = 0; i < 8; ++i) box.vertices.push_back({(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1], (i & 4) ? hi[2] : lo[2]});
+    const uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) {
+        box.triangles.push_back({q[0], q[1], q[2]});
+        box.triangles.push_back({q[0], q[2], q[3]});
+    }
+    return box;
+}
+
+}  // namespace
+
+MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOptions& options, Progress& progress) {
+    if (!(options.margin > 0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the mold margin must be > 0");
+    progress.stage("mold: parting surface");
+    const volume::AlignedFrame frame = volume::aligned_frame(direction);
+    const Mesh local = volume::rotate_mesh(part, frame, false);
+    const BoundingBox box = bounding_box(local);
+    const double margin = options.margin;
+    const double step = options.grid_step > 0 ? options.grid_step : margin / 8;
+
+    Vec3 block_lo, block_hi;
+    int block_cells[2];
+    for (int k = 0; k < 2; ++k) {
+        block_lo[k] = box.min[k] - margin;
+        block_cells[k] = int(std::ceil((box.max[k] + margin - block_lo[k]) / step));
+        block_hi[k] = block_lo[k] + block_cells[k] * step;
+    }
+    block_lo[2] = box.min[2] - margin;
+    block_hi[2] = box.max[2] + margin;
+
+    HeightGrid grid;
+    grid.x0 = block_lo[0] - step;
+    grid.y0 = block_lo[1] - step;
+    grid.step = step;
+    grid.nx = block_cells[0] + 2;
+    grid.ny = block_cells[1] + 2;
+    const std::vector<Vec3> parting_line = silhouette(local);
+    interpolate_parting_surface(parting_line, block_lo[2] + margin / 4, block_hi[2] - margin / 4, {}, grid);
+    // Raised by a hundredth of a step: a surface that contains parting-line
+    // edges exactly (a flat line, a flat surface) gives the booleans points a
+    // rounding error apart, which would round to crossing triangles.
+    for (double& z : grid.z) z += 1e-2 * step;
+    const MoldFeatureSizes sizes = mold_feature_sizes(margin);
+    const MoldFeatures features = place_mold_features(parting_line, grid, block_lo, block_hi, box.min, box.max, sizes);
+    progress.check();
+
+    progress.stage("mold: solids");
+    const size_t vertex_count = grid.z.size();
+    std::vector<char> block(size_t(grid.nx) * size_t(grid.ny), 0);
+    for (int j = 1; j + 1 < grid.ny; ++j)
+        for (int i = 1; i + 1 < grid.nx; ++i) block[size_t(j) * size_t(grid.nx) + size_t(i)] = 1;
+    // The block halves and the swept volumes reach past the block's top and
+    // bottom by different amounts, and a final cut by the block's slab makes
+    // those faces: no two solids ever share a plane there, whose overlapping
+    // faces would leave near-coincident points after rounding.
+    const Mesh block_below =
+        height_field_solid(grid, block, std::vector<double>(vertex_count, block_lo[2] - margin), grid.z);
+    const Mesh block_above =
+        height_field_solid(grid, block, grid.z, std::vector<double>(vertex_count, block_hi[2] + margin));
+    const Mesh slab = box_mesh({block_lo[0] - margin, block_lo[1] - margin, block_lo[2]},
+                               {block_hi[0] + margin, block_hi[1] + margin, block_hi[2]});
+
+    // Channels straddle the parting surface; where they reach over the part
+    // they take its whole column, so both pieces stay height fields.
+    std::vector<double> channel_lo(vertex_count), channel_hi(vertex_count);
+    for (int j = 0; j <= grid.ny; ++j)
+        for (int i = 0; i <= grid.nx; ++i) {
+            const size_t v = size_t(j) * size_t(grid.nx + 1) + size_t(i);
+            channel_lo[v] = grid.z[v] - sizes.runner_half_width;
+            channel_hi[v] = grid.z[v] + sizes.runner_half_width;
+            double z_lo, z_hi;
+            if (grid.x(i) >= box.min[0] && grid.x(i) <= box.max[0] && grid.y(j) >= box.min[1] &&
+                grid.y(j) <= box.max[1] && column_extent(local, grid.x(i), grid.y(j), z_lo, z_hi)) {
+                channel_lo[v] = std::min(channel_lo[v], z_lo - sizes.runner_half_width);
+                channel_hi[v] = std::max(channel_hi[v], z_hi + sizes.runner_half_width);
+            }
+        }
+    const Mesh channels = height_field_solid(grid, features.channel_cells, channel_lo, channel_hi);
+    const Mesh swept_up = sweep_faces_to_plane(local, true, block_hi[2] + 2 * margin);
+    const Mesh swept_down = sweep_faces_to_plane(local, false, block_lo[2] - 2 * margin);
+    progress.check();
+
+    progress.stage("mold: bottom piece");
+    Mesh bottom = mesh_boolean(block_below, "the block below the parting surface",
+                               {{BooleanOperation::unite, &swept_down, "the part swept down"},
+                                {BooleanOperation::unite, &features.pins, "the key pins"},
+                                {BooleanOperation::subtract, &swept_up, "the part swept up"},
+                                {BooleanOperation::subtract, &channels, "the runner, sprue and vents"},
+                                {BooleanOperation::intersect, &slab, "the block's slab"}},
+                               progress);
+    progress.stage("mold: top piece");
+    Mesh top = mesh_boolean(block_above, "the block above the parting surface",
+                            {{BooleanOperation::unite, &swept_up, "the part swept up"},
+                             {BooleanOperation::subtract, &swept_down, "the part swept down"},
+                             {BooleanOperation::subtract, &channels, "the runner, sprue and vents"},
+                             {BooleanOperation::subtract, &features.holes, "the key holes"},
+                             {BooleanOperation::intersect, &slab, "the block's slab"}},
+                            progress);
+
+    MoldPair pair;
+    pair.top = volume::rotate_mesh(top, frame, true);
+    pair.bottom = volume::rotate_mesh(bottom, frame, true);
+    pair.channels = volume::rotate_mesh(channels, frame, true);
+    pair.block_size = {block_hi[0] - block_lo[0], block_hi[1] - block_lo[1], block_hi[2] - block_lo[2]};
+    pair.block_center = frame.to_world({0.5 * (block_lo[0] + block_hi[0]), 0.5 * (block_lo[1] + block_hi[1]),
+                                        0.5 * (block_lo[2] + block_hi[2])});
+    pair.gate = frame.to_world(features.gate);
+    for (const Vec3& v : features.vents) pair.vents.push_back(frame.to_world(v));
+    pair.up = frame.e2;
+    return pair;
+}
+
+}  // namespace fabvdb::surface

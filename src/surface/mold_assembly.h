@@ -1,0 +1,46 @@
+//! A two-piece mold for one moldable part (thesis §3.6.3): in the frame where
+//! the parting direction d is +Z, a block with `margin` around the part is
+//! split by the RBF parting surface through the part's silhouette (its
+//! parting line) and the pieces are
+//!   bottom = ((B⁻ ∪ SV↓ ∪ pins) ∖ SV↑ ∖ channels) ∩ slab,
+//!   top    = ((B⁺ ∪ SV↑) ∖ SV↓ ∖ channels ∖ key holes) ∩ slab,
+//! B∓ the block below/above the parting surface, SV↑ the part swept up to the
+//! block top (the part and everything above it), SV↓ swept down, channels the
+//! runner, sprue and vents (mold_features.h), slab the block's height range
+//! (B∓ and SV reach past it, so no two solids share a plane). CGAL exact
+//! booleans. The part
+//! must be a double height field along d (sweep.h makes it one). The pieces
+//! come back in world coordinates, closed and 2-manifold; the bottom is
+//! removed along −d, the top along +d. Checks cancellation between stages.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+#include "surface/mold_features.h"
+
+namespace fabvdb::surface {
+
+struct MoldOptions {
+    //! Block margin around the part, mm (> 0).
+    double margin = 10.0;
+    //! Parting-surface grid step, mm; 0: margin/8.
+    double grid_step = 0.0;
+};
+
+struct MoldPair {
+    Mesh top, bottom;  //!< world coordinates
+    Mesh channels;     //!< runner, sprue and vents as one solid (world), for volume accounting
+    std::array<double, 3> block_size{0, 0, 0};  //!< along e1, e2 (up when pouring) and d
+    Vec3 block_center{0, 0, 0};                  //!< world
+    Vec3 gate{0, 0, 0};                          //!< world
+    std::vector<Vec3> vents;                     //!< world
+    Vec3 up{0, 0, 0};                            //!< world direction that is up when pouring
+};
+
+//! `part`: closed, 2-manifold, world coordinates. `direction`: d.
+MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOptions& options, Progress& progress);
+
+}  // namespace fabvdb::surface
