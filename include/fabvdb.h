@@ -209,6 +209,93 @@ FABVDB_API void fabvdb_volume_free(fabvdb_volume* volume);
 /* ------------------------------------------------------------------------- */
 /* Drainability and drain holes (fabvdb drain, fabvdb powder-sim)             */
 /* ------------------------------------------------------------------------- */
+/* Options of fabvdb_mesh_drain. Orientations are gravity directions (x, y, z;
+ * need not be unit) in the part's frame. (since 0.1) */
+typedef struct fabvdb_drain_options {
+    size_t struct_size;          /* set by fabvdb_drain_options_init */
+    double wall;                 /* mm, wall left when a solid input is hollowed; default 3 */
+    double voxel_size;           /* mm of the level sets; 0 (default): wall / 4 */
+    int hole_count;              /* holes to place; 0 (default): automatic — at least 2 per
+                                    cavity, more until the predicted residual is under
+                                    target_residual */
+    double hole_diameter;        /* mm; default 4 */
+    double repose_degrees;       /* angle of repose of the powder; default 35 */
+    double effort;               /* rho: chance the operator turns the part once more; default 0.9 */
+    double target_residual;      /* fraction of the cavity volume, automatic mode; default 0.01 */
+    const double* orientations;  /* 3*orientation_count doubles: the operator's turns; NULL
+                                    (default): the 162 icosphere directions. Borrowed. */
+    size_t orientation_count;
+    double first_gravity[3];     /* gravity as printed, the first orientation; default 0 0 -1 */
+    int patch_count;             /* cavity surface patches of the model; default 2000 */
+    const char* keep_out_path;   /* NULL (default), or a JSON file of spheres
+                                    ({"spheres": [{"center": [x,y,z], "radius": r}]}) or a closed
+                                    mesh file: no hole opens in it. Borrowed. */
+    const char* heatmap_path;    /* NULL (default), or a .ply file that receives the cavity
+                                    surface coloured by drainability (and a `quality` property) */
+} fabvdb_drain_options;
+
+/* Fills *options with the defaults above and sets struct_size. NULL does
+ * nothing. Thread-safe. (since 0.1) */
+FABVDB_API void fabvdb_drain_options_init(fabvdb_drain_options* options);
+
+/* Places drain holes in a part for powder printing and drills them. A solid
+ * mesh is hollowed first (options->wall); a mesh that already is a hollow
+ * shell (it has inward-facing shells around a void) is used as is. The holes
+ * maximise the powder the drainability model drains (README "fabvdb drain");
+ * each cavity gets its own. The report has holes[] ({center, axis, diameter,
+ * cavity, depth}), predicted_residual_fraction, predicted_residual_mm3, the
+ * same for the lowest-point baseline with as many holes (baseline_holes[],
+ * baseline_residual_fraction, baseline_residual_mm3), cavity_volume_mm3,
+ * cavities, patches, candidates, input_was_hollow, voxel_size and timings
+ * (seconds per stage).
+ * mesh: borrowed. options: borrowed; NULL means the defaults.
+ * out_mesh: receives the drilled part (owned by the caller). out_report:
+ * receives the report (owned by the caller); may be NULL if not wanted.
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (NULL ctx/mesh/out_mesh, an
+ * option out of range, struct_size too small), FABVDB_ERR_BAD_INPUT (no
+ * cavity; no site where a hole passes cleanly through the wall; a malformed
+ * keep-out file), FABVDB_ERR_IO (keep-out or heat-map file), FABVDB_ERR_OUT_OF_BUDGET,
+ * FABVDB_ERR_OUT_OF_MEMORY, FABVDB_ERR_CANCELLED or FABVDB_ERR_INTERNAL; on
+ * failure no output is made and no heat-map file is left. Reports progress.
+ * One thread per context at a time. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                           const fabvdb_drain_options* options, fabvdb_mesh** out_mesh,
+                                           fabvdb_report** out_report);
+
+/* Options of fabvdb_powder_simulate. (since 0.1) */
+typedef struct fabvdb_powder_options {
+    size_t struct_size;          /* set by fabvdb_powder_options_init */
+    double voxel_size;           /* mm of the sand-pile cells; 0 (default): the bounding-box
+                                    diagonal / 150, at most a quarter of the smallest hole */
+    double repose_degrees;       /* default 35 */
+    const double* orientations;  /* as in fabvdb_drain_options; NULL: the 162 directions */
+    size_t orientation_count;
+    double first_gravity[3];     /* the routine's first turn; default 0 0 -1 */
+    int turns;                   /* turns of the routine, the first included; default 10 */
+    uint64_t seed;               /* draws the later turns from the orientations; default 1 */
+    int slope_window;            /* cells over which a pile's slope is measured; default 4 */
+} fabvdb_powder_options;
+
+/* Fills *options with the defaults above. NULL does nothing. Thread-safe. (since 0.1) */
+FABVDB_API void fabvdb_powder_options_init(fabvdb_powder_options* options);
+
+/* The reference powder simulation, independent of the drainability model:
+ * fills the cavity of `part` (a hollow shell, drilled or not) with powder,
+ * drills the holes, and runs voxel sand-pile rules through the operator's
+ * routine: the first orientation, then turns-1 orientations drawn with the
+ * seed. The report has initial_mm3, residual_mm3, residual_fraction,
+ * residual_after_turn_mm3[], routine[] (the gravity of each turn), voxel_size
+ * and timings.
+ * part: borrowed. holes_json: JSON text, a drain report or any object with a
+ * holes[] array of {center, axis, diameter, depth} (depth: drilled length from
+ * the center outward; default 4 diameters).
+ * options: borrowed; NULL means the defaults. out: receives the report.
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT, FABVDB_ERR_BAD_INPUT (bad
+ * holes JSON: the message names the defect; no enclosed void),
+ * FABVDB_ERR_OUT_OF_BUDGET, FABVDB_ERR_OUT_OF_MEMORY, FABVDB_ERR_CANCELLED or
+ * FABVDB_ERR_INTERNAL. Reports progress. One thread per context. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, const char* holes_json,
+                                                const fabvdb_powder_options* options, fabvdb_report** out);
 
 /* ------------------------------------------------------------------------- */
 /* Mold decomposition (fabvdb decompose)                                      */

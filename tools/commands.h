@@ -7,6 +7,8 @@
 extern const cli_command cmd_info;
 extern const cli_command cmd_decompose;
 extern const cli_command cmd_batch;
+extern const cli_command cmd_drain;
+extern const cli_command cmd_powder_sim;
 
 /* The command called `name`, or NULL (tools/fabvdb.c). */
 const cli_command* command_named(const char* name);

@@ -10,6 +10,8 @@ static const cli_command* const commands[] = {
     &cmd_info,
     &cmd_decompose,
     &cmd_batch,
+    &cmd_drain,
+    &cmd_powder_sim,
 };
 static const size_t command_count = sizeof(commands) / sizeof(commands[0]);
 

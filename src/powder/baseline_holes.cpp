@@ -1,0 +1,37 @@
+//! Lowest-point drain holes (see baseline_holes.h).
+#include "powder/baseline_holes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace fabvdb::powder {
+
+std::vector<DrainHole> baseline_holes(const std::vector<DrainHole>& candidates, const std::vector<int>& per_cavity,
+                                      const Vec3& gravity, double min_center_distance) {
+    auto height = [&](const DrainHole& hole) {
+        return -(hole.center[0] * gravity[0] + hole.center[1] * gravity[1] + hole.center[2] * gravity[2]);
+    };
+    std::vector<size_t> order(candidates.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return height(candidates[a]) < height(candidates[b]); });
+    std::vector<DrainHole> holes;
+    std::vector<int> taken(per_cavity.size(), 0);
+    for (size_t index : order) {
+        const DrainHole& candidate = candidates[index];
+        if (candidate.cavity >= per_cavity.size() || taken[candidate.cavity] >= per_cavity[candidate.cavity])
+            continue;
+        const bool spaced = std::all_of(holes.begin(), holes.end(), [&](const DrainHole& hole) {
+            const double dx = hole.center[0] - candidate.center[0], dy = hole.center[1] - candidate.center[1],
+                         dz = hole.center[2] - candidate.center[2];
+            return std::sqrt(dx * dx + dy * dy + dz * dz) >= min_center_distance;
+        });
+        if (!spaced) continue;
+        holes.push_back(candidate);
+        ++taken[candidate.cavity];
+    }
+    return holes;
+}
+
+}  // namespace fabvdb::powder

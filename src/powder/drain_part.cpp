@@ -1,0 +1,130 @@
+//! `fabvdb drain` on a mesh (see drain_part.h).
+#include "powder/drain_part.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/MeshToVolume.h>
+
+#include "core/error.h"
+#include "surface/mesh_topology.h"
+#include "surface/signed_volume.h"
+#include "volume/drill_holes.h"
+#include "volume/extract_mesh.h"
+#include "volume/hollow.h"
+#include "volume/signed_distance.h"
+
+namespace fabvdb::powder {
+
+namespace {
+
+struct Shells {
+    Mesh outer, voids;
+};
+
+//! Outward shells (the part) and inward shells (its voids) of a closed mesh.
+Shells split_shells(const Mesh& mesh) {
+    size_t count = 0;
+    const std::vector<uint32_t> component = surface::triangle_components(mesh, count);
+    const std::vector<double> volume = surface::component_signed_volumes(mesh, component, count);
+    Shells shells;
+    shells.outer.vertices = mesh.vertices;
+    shells.voids.vertices = mesh.vertices;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        (volume[component[t]] < 0.0 ? shells.voids : shells.outer).triangles.push_back(mesh.triangles[t]);
+    return shells;
+}
+
+openvdb::FloatGrid::Ptr level_set_of(const Mesh& closed, double voxel) {
+    std::vector<openvdb::Vec3s> points;
+    std::vector<openvdb::Vec3I> triangles;
+    points.reserve(closed.vertices.size());
+    for (const Vec3& p : closed.vertices) points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
+    for (const Triangle& t : closed.triangles) triangles.emplace_back(t[0], t[1], t[2]);
+    return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(
+        *openvdb::math::Transform::createLinearTransform(voxel), points, triangles, 3.0f);
+}
+
+}  // namespace
+
+bool is_hollow_shell(const Mesh& mesh) {
+    size_t count = 0;
+    const std::vector<uint32_t> component = surface::triangle_components(mesh, count);
+    const std::vector<double> volume = surface::component_signed_volumes(mesh, component, count);
+    double outer = 0.0, voids = 0.0;
+    for (double v : volume) (v < 0 ? voids : outer) += std::abs(v);
+    return voids > 1e-6 * outer && voids > 0.0;
+}
+
+DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, Progress& progress) {
+    if (!(options.wall > 0.0) || !std::isfinite(options.wall))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the wall must be > 0 mm");
+    validate_mesh(input, options.input_name);
+    if (input.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangles");
+    openvdb::initialize();
+    DrainPartResult result;
+    auto last = std::chrono::steady_clock::now();
+    auto lap = [&](const std::string& name) {
+        const auto now = std::chrono::steady_clock::now();
+        result.timings[name] += std::chrono::duration<double>(now - last).count();
+        last = now;
+    };
+    const double voxel = options.voxel_size > 0.0 ? options.voxel_size : volume::automatic_hollow_voxel(options.wall);
+    result.voxel_size = voxel;
+
+    // A closed mesh of the part's outer shells and its voids' shells (inward).
+    Mesh shells_mesh;
+    result.input_was_hollow = is_hollow_shell(input);
+    if (result.input_was_hollow) {
+        volume::SignedDistanceOptions distance;
+        distance.voxel_size = voxel;
+        distance.memory_budget_bytes = options.memory_budget_bytes;
+        distance.input_name = options.input_name;
+        shells_mesh = volume::extract_mesh(*volume::signed_distance_from_mesh(input, distance, progress), 0.0, progress);
+        lap("signed distance");
+    } else {
+        volume::HollowOptions hollow;
+        hollow.wall = options.wall;
+        hollow.voxel_size = voxel;
+        hollow.memory_budget_bytes = options.memory_budget_bytes;
+        hollow.input_name = options.input_name;
+        shells_mesh = volume::hollow(input, hollow, progress).mesh;
+        lap("hollow");
+    }
+    progress.stage("level sets");
+    const Shells shells = split_shells(shells_mesh);
+    if (shells.voids.triangles.empty())
+        throw Error(FABVDB_ERR_BAD_INPUT,
+                    options.input_name + ": the part has no cavity (thinner than twice the wall everywhere)");
+    const openvdb::FloatGrid::Ptr part = level_set_of(shells.outer, voxel);
+    const openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
+    result.shell = openvdb::tools::csgDifferenceCopy(*part, *cavity);
+    progress.check();
+    lap("level sets");
+
+    DrainPlanOptions plan_options = options.plan;
+    plan_options.nominal_wall = options.wall;
+    result.plan = plan_drain_holes(*part, *cavity, *result.shell, plan_options, progress);
+    for (const auto& [name, seconds] : result.plan.timings) result.timings[name] += seconds;
+    last = std::chrono::steady_clock::now();
+
+    std::vector<volume::DrillCylinder> cylinders;
+    for (const DrainHole& hole : result.plan.holes) {
+        volume::DrillCylinder cylinder;
+        const double back = 0.5 * hole.diameter;
+        for (int k = 0; k < 3; ++k) {
+            cylinder.start[k] = hole.center[k] - back * hole.axis[k];
+            cylinder.end[k] = hole.center[k] + hole.depth * hole.axis[k];
+        }
+        cylinder.radius = 0.5 * hole.diameter;
+        cylinders.push_back(cylinder);
+    }
+    const openvdb::FloatGrid::Ptr drilled = volume::drill_holes(*result.shell, cylinders, progress);
+    lap("drill");
+    result.drilled = volume::extract_mesh(*drilled, 0.0, progress);
+    lap("extract");
+    return result;
+}
+
+}  // namespace fabvdb::powder

@@ -1,0 +1,44 @@
+//! `fabvdb drain` end to end on a mesh: the input's level sets (a solid is
+//! hollowed with `wall` by volume::hollow; an input that already is a hollow
+//! shell — it has inward-facing shells that bound a void — is used as is),
+//! the drain-hole plan (powder/drain_plan.h), the holes drilled through the
+//! shell in the level set (volume::drill_holes) and the drilled part
+//! extracted as the output mesh. Reports progress; cancellable; a cancelled
+//! or failed call returns nothing.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+#include "powder/drain_plan.h"
+
+namespace fabvdb::powder {
+
+struct DrainPartOptions {
+    double wall = 3.0;          //!< mm, for a solid input
+    double voxel_size = 0.0;    //!< mm; 0: wall / 4
+    uint64_t memory_budget_bytes = 0;
+    std::string input_name = "mesh";
+    DrainPlanOptions plan;      //!< plan.nominal_wall is set to `wall`
+};
+
+struct DrainPartResult {
+    Mesh drilled;
+    bool input_was_hollow = false;
+    double voxel_size = 0.0;
+    openvdb::FloatGrid::Ptr shell;  //!< undrilled, negative in the wall
+    DrainPlan plan;
+    std::map<std::string, double> timings;  //!< all stages, seconds
+};
+
+DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, Progress& progress);
+
+//! Whether the mesh already is a hollow shell: it has a closed component
+//! facing inward (negative signed volume) — the boundary of a void.
+bool is_hollow_shell(const Mesh& mesh);
+
+}  // namespace fabvdb::powder

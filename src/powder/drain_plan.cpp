@@ -1,0 +1,105 @@
+//! The drain-hole planning pipeline (see drain_plan.h).
+#include "powder/drain_plan.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/icosphere.h"
+#include "powder/baseline_holes.h"
+#include "powder/hole_candidates.h"
+#include "powder/orientation_flows.h"
+#include "powder/powder_drop.h"
+#include "powder/surface_ray_caster.h"
+#include "volume/extract_mesh.h"
+
+namespace fabvdb::powder {
+
+namespace {
+
+Vec3 unit(const Vec3& v) {
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(length > 0.0) || !std::isfinite(length))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "an orientation is not a non-zero direction");
+    return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+class StageClock {
+public:
+    explicit StageClock(std::map<std::string, double>& timings) : timings_(timings) {}
+    void lap(const std::string& name) {
+        const auto now = std::chrono::steady_clock::now();
+        timings_[name] += std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+    }
+
+private:
+    std::map<std::string, double>& timings_;
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatGrid& cavity,
+                           const openvdb::FloatGrid& shell, const DrainPlanOptions& options, Progress& progress) {
+    if (!(options.hole_diameter > 0.0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the hole diameter must be positive");
+    if (!(options.repose_radians > 0.0 && options.repose_radians < M_PI / 2))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the angle of repose must be between 0 and 90 degrees");
+    DrainPlan plan;
+    StageClock clock(plan.timings);
+
+    plan.cavity_surface = volume::extract_mesh(cavity, 0.0, progress);
+    if (plan.cavity_surface.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the part has no cavity");
+    clock.lap("cavity surface");
+    progress.stage("patches");
+    plan.patches = cluster_cavity_patches(plan.cavity_surface, options.patch_count);
+    clock.lap("patches");
+
+    const SurfaceRayCaster caster(plan.cavity_surface);
+    std::vector<Vec3> gravities;
+    if (options.orientations.empty())
+        gravities = thesis_directions().directions;
+    else
+        for (const Vec3& g : options.orientations) gravities.push_back(unit(g));
+    gravities.push_back(unit(options.first_gravity));
+    TransferOptions transfer;
+    transfer.repose_radians = options.repose_radians;
+    std::vector<OrientationFlow> turns = build_orientation_flows(plan.patches, caster, gravities, transfer, progress);
+    const OrientationFlow first = std::move(turns.back());
+    turns.pop_back();
+    clock.lap("transfer and settle matrices");
+
+    const PowderSamples powder =
+        drop_cavity_powder(cavity, plan.patches, caster, first, options.powder_samples, progress);
+    clock.lap("powder drop");
+
+    HoleCandidateOptions candidate_options;
+    candidate_options.diameter = options.hole_diameter;
+    candidate_options.nominal_wall = options.nominal_wall;
+    const std::vector<DrainHole> candidates =
+        hole_candidates(plan.patches, shell, part, options.keep_out, candidate_options, progress);
+    plan.candidate_count = candidates.size();
+    if (candidates.empty())
+        throw Error(FABVDB_ERR_BAD_INPUT, "no site lets a drain hole of this diameter pass cleanly through the wall");
+    clock.lap("hole candidates");
+
+    DrainabilityOptions model_options;
+    model_options.repose_radians = options.repose_radians;
+    model_options.effort = options.effort;
+    const DrainabilityModel model(plan.patches, turns, first, powder, model_options);
+    HoleSearchOptions search = options.search;
+    search.min_center_distance = 2.0 * options.hole_diameter;
+    HoleSearchResult found = search_drain_holes(model, candidates, plan.patches.cavity_count, search, progress);
+    plan.holes = std::move(found.holes);
+    plan.evaluation = std::move(found.evaluation);
+    clock.lap("hole search");
+
+    std::vector<int> per_cavity(plan.patches.cavity_count, 0);
+    for (const DrainHole& hole : plan.holes) ++per_cavity[hole.cavity];
+    plan.baseline = baseline_holes(candidates, per_cavity, first.gravity, search.min_center_distance);
+    plan.baseline_evaluation = model.evaluate(plan.baseline);
+    clock.lap("baseline");
+    return plan;
+}
+
+}  // namespace fabvdb::powder

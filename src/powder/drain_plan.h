@@ -1,0 +1,56 @@
+//! Planning drain holes for a hollow part, from its level sets: extracts the
+//! cavity surface, clusters it into patches, builds the powder flow of every
+//! orientation (the first, printing orientation and the operator's set),
+//! drops the cavity's powder, finds the candidate sites, searches the holes
+//! and places the lowest-point baseline with as many holes per cavity.
+//! Returns the holes, the model's evaluation of both sets, per-stage timings.
+//! Reports progress; cancellable (Error(CANCELLED), no partial result).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+#include "powder/cavity_patches.h"
+#include "powder/drainability_model.h"
+#include "powder/hole_search.h"
+#include "powder/keep_out.h"
+
+namespace fabvdb::powder {
+
+struct DrainPlanOptions {
+    double hole_diameter = 4.0;
+    double nominal_wall = 3.0;
+    double repose_radians = 0.6108652381980153;  // 35°
+    double effort = 0.9;
+    //! Gravity directions of the operator's turns; empty: the 162 thesis directions.
+    std::vector<Vec3> orientations;
+    //! Gravity as printed, the routine's first orientation.
+    Vec3 first_gravity{0, 0, -1};
+    size_t patch_count = 2000;
+    size_t powder_samples = 60000;
+    HoleSearchOptions search;
+    KeepOut keep_out;
+};
+
+struct DrainPlan {
+    Mesh cavity_surface;
+    CavityPatches patches;
+    size_t candidate_count = 0;
+    std::vector<DrainHole> holes;
+    DrainEvaluation evaluation;
+    std::vector<DrainHole> baseline;
+    DrainEvaluation baseline_evaluation;
+    std::map<std::string, double> timings;
+};
+
+//! `part` negative inside the part (cavity included), `cavity` negative inside
+//! the cavity, `shell` negative in the wall; all level sets in mm.
+DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatGrid& cavity,
+                           const openvdb::FloatGrid& shell, const DrainPlanOptions& options, Progress& progress);
+
+}  // namespace fabvdb::powder

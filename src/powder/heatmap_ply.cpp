@@ -1,0 +1,83 @@
+//! The drainability heat map as a coloured PLY (see heatmap_ply.h).
+#include "powder/heatmap_ply.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+
+#include "core/atomic_output.h"
+#include "core/error.h"
+
+namespace fabvdb::powder {
+
+namespace {
+
+template <class T>
+void put(std::string& out, T value) {
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    out.append(bytes, sizeof(T));  // the project targets little-endian hosts
+}
+
+//! Red (0) through yellow (0.5) to green (1).
+void colour(double value, uint8_t rgb[3]) {
+    const double v = std::clamp(value, 0.0, 1.0);
+    rgb[0] = uint8_t(std::lround(255.0 * std::min(1.0, 2.0 * (1.0 - v))));
+    rgb[1] = uint8_t(std::lround(255.0 * std::min(1.0, 2.0 * v)));
+    rgb[2] = 0;
+}
+
+}  // namespace
+
+void write_heatmap_ply(const Mesh& surface, const CavityPatches& patches, const std::vector<double>& drainability,
+                       const std::string& path) {
+    if (drainability.size() != patches.size() || patches.patch_of_triangle.size() != surface.triangles.size())
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the heat map's drainability does not match its patches");
+    std::vector<double> sum(surface.vertices.size(), 0.0), weight(surface.vertices.size(), 0.0);
+    for (size_t t = 0; t < surface.triangles.size(); ++t) {
+        const Vec3& a = surface.vertices[surface.triangles[t][0]];
+        const Vec3& b = surface.vertices[surface.triangles[t][1]];
+        const Vec3& c = surface.vertices[surface.triangles[t][2]];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double area = 0.5 * std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) +
+                                             std::pow(u[2] * v[0] - u[0] * v[2], 2) +
+                                             std::pow(u[0] * v[1] - u[1] * v[0], 2)) + 1e-12;
+        const double value = drainability[patches.patch_of_triangle[t]];
+        for (uint32_t corner : surface.triangles[t]) {
+            sum[corner] += area * value;
+            weight[corner] += area;
+        }
+    }
+    std::string out = "ply\nformat binary_little_endian 1.0\ncomment fabvdb drainability heat map\n";
+    out += "element vertex " + std::to_string(surface.vertices.size()) + "\n";
+    out += "property float x\nproperty float y\nproperty float z\n";
+    out += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float quality\n";
+    out += "element face " + std::to_string(surface.triangles.size()) + "\n";
+    out += "property list uchar int vertex_indices\nend_header\n";
+    for (size_t i = 0; i < surface.vertices.size(); ++i) {
+        for (int k = 0; k < 3; ++k) put(out, float(surface.vertices[i][k]));
+        const double value = weight[i] > 0 ? sum[i] / weight[i] : 0.0;
+        uint8_t rgb[3];
+        colour(value, rgb);
+        for (uint8_t channel : rgb) put(out, channel);
+        put(out, float(value));
+    }
+    // The cavity surface faces out of the cavity; the heat map faces the powder.
+    for (const Triangle& t : surface.triangles) {
+        put(out, uint8_t(3));
+        put(out, int32_t(t[0]));
+        put(out, int32_t(t[2]));
+        put(out, int32_t(t[1]));
+    }
+    AtomicOutput output(path);
+    {
+        std::ofstream file(output.temp_path(), std::ios::binary);
+        file.write(out.data(), std::streamsize(out.size()));
+        if (!file) throw Error(FABVDB_ERR_IO, path + ": cannot write the heat map");
+    }
+    output.commit();
+}
+
+}  // namespace fabvdb::powder

@@ -1,0 +1,315 @@
+//! The voxel sand-pile reference simulation (see sandpile_simulation.h).
+#include "powder/sandpile_simulation.h"
+
+#include <cmath>
+#include <cstdint>
+
+#include <Eigen/Geometry>
+#include <tbb/parallel_for.h>
+
+#include "core/error.h"
+
+namespace fabvdb::powder {
+
+namespace {
+
+enum Cell : uint8_t { kFree = 0, kSolid = 1, kOutside = 2, kGrain = 3 };
+
+struct Drill {
+    Eigen::Vector3d center, axis;
+    double radius, depth;
+    bool contains(const Eigen::Vector3d& p) const {
+        const Eigen::Vector3d v = p - center;
+        const double t = v.dot(axis);
+        return t >= -radius && t <= depth && (v - t * axis).squaredNorm() <= radius * radius;
+    }
+};
+
+//! The part voxelised in a frame whose third axis points up.
+class Frame {
+public:
+    Frame(const openvdb::FloatGrid& solid, const std::vector<Drill>& drills, const Eigen::Vector3d& gravity,
+          double h, std::vector<char>* cavity_fill)
+        : h_(h) {
+        const Eigen::Vector3d up = -gravity.normalized();
+        const Eigen::Vector3d e1 = up.unitOrthogonal(), e2 = up.cross(e1);
+        axes_.col(0) = e1;
+        axes_.col(1) = e2;
+        axes_.col(2) = up;
+        const openvdb::CoordBBox box = solid.evalActiveVoxelBoundingBox();
+        Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
+        for (int corner = 0; corner < 8; ++corner) {
+            const openvdb::Coord ijk((corner & 1) ? box.max().x() : box.min().x(),
+                                     (corner & 2) ? box.max().y() : box.min().y(),
+                                     (corner & 4) ? box.max().z() : box.min().z());
+            const openvdb::Vec3d w = solid.indexToWorld(ijk);
+            const Eigen::Vector3d q = axes_.transpose() * Eigen::Vector3d(w[0], w[1], w[2]);
+            lo = lo.cwiseMin(q);
+            hi = hi.cwiseMax(q);
+        }
+        // The drills reach past the outer surface: the frame holds them whole.
+        for (const Drill& drill : drills)
+            for (const Eigen::Vector3d& end : {Eigen::Vector3d(drill.center - drill.radius * drill.axis),
+                                               Eigen::Vector3d(drill.center + drill.depth * drill.axis)}) {
+                const Eigen::Vector3d q = axes_.transpose() * end;
+                lo = lo.cwiseMin(q - Eigen::Vector3d::Constant(drill.radius));
+                hi = hi.cwiseMax(q + Eigen::Vector3d::Constant(drill.radius));
+            }
+        lo -= Eigen::Vector3d::Constant(3 * h);
+        hi += Eigen::Vector3d::Constant(3 * h);
+        origin_ = lo;
+        n_ = {int((hi.x() - lo.x()) / h) + 1, int((hi.y() - lo.y()) / h) + 1, int((hi.z() - lo.z()) / h) + 1};
+        cells_.assign(size_t(n_[0]) * n_[1] * n_[2], kFree);
+        std::vector<char> barrier(cells_.size(), 0);
+        tbb::parallel_for(0, n_[0], [&](int x) {
+            auto accessor = solid.getConstAccessor();
+            for (int y = 0; y < n_[1]; ++y)
+                for (int z = 0; z < n_[2]; ++z) {
+                    const Eigen::Vector3d p = world(x, y, z);
+                    const openvdb::Coord ijk = openvdb::Coord::round(solid.worldToIndex(openvdb::Vec3d(p.x(), p.y(), p.z())));
+                    bool drilled = false;
+                    for (const Drill& drill : drills) drilled = drilled || drill.contains(p);
+                    const size_t i = index(x, y, z);
+                    if (accessor.getValue(ijk) < 0.0f && !drilled) cells_[i] = kSolid;
+                    barrier[i] = cells_[i] == kSolid || drilled;
+                }
+        });
+        // The outside: what the border reaches with the holes plugged.
+        std::vector<size_t> stack;
+        for (int x = 0; x < n_[0]; ++x)
+            for (int y = 0; y < n_[1]; ++y)
+                for (int z = 0; z < n_[2]; ++z)
+                    if (x == 0 || y == 0 || z == 0 || x == n_[0] - 1 || y == n_[1] - 1 || z == n_[2] - 1) {
+                        const size_t i = index(x, y, z);
+                        if (!barrier[i] && cells_[i] == kFree) {
+                            cells_[i] = kOutside;
+                            stack.push_back(i);
+                        }
+                    }
+        while (!stack.empty()) {
+            const size_t i = stack.back();
+            stack.pop_back();
+            const int z = int(i % n_[2]), y = int((i / n_[2]) % n_[1]), x = int(i / (size_t(n_[2]) * n_[1]));
+            const int step[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+            for (const auto& s : step) {
+                const int a = x + s[0], b = y + s[1], c = z + s[2];
+                if (!inside(a, b, c)) continue;
+                const size_t j = index(a, b, c);
+                if (!barrier[j] && cells_[j] == kFree) {
+                    cells_[j] = kOutside;
+                    stack.push_back(j);
+                }
+            }
+        }
+        if (cavity_fill) {
+            cavity_fill->assign(cells_.size(), 0);
+            for (size_t i = 0; i < cells_.size(); ++i) (*cavity_fill)[i] = cells_[i] == kFree && !barrier[i];
+        }
+    }
+
+    size_t index(int x, int y, int z) const { return (size_t(x) * n_[1] + y) * n_[2] + z; }
+    bool inside(int x, int y, int z) const {
+        return x >= 0 && y >= 0 && z >= 0 && x < n_[0] && y < n_[1] && z < n_[2];
+    }
+    Eigen::Vector3d world(int x, int y, int z) const {
+        return axes_ * (origin_ + h_ * Eigen::Vector3d(x + 0.5, y + 0.5, z + 0.5));
+    }
+    Eigen::Vector3d world(size_t i) const {
+        return world(int(i / (size_t(n_[2]) * n_[1])), int((i / n_[2]) % n_[1]), int(i % n_[2]));
+    }
+    //! The cell holding world point p, or false if p is outside the frame.
+    bool cell_of(const Eigen::Vector3d& p, int& x, int& y, int& z) const {
+        const Eigen::Vector3d q = (axes_.transpose() * p - origin_) / h_;
+        x = int(std::floor(q.x()));
+        y = int(std::floor(q.y()));
+        z = int(std::floor(q.z()));
+        return inside(x, y, z);
+    }
+
+    const std::array<int, 3>& size() const { return n_; }
+    std::vector<uint8_t>& cells() { return cells_; }
+
+private:
+    double h_;
+    Eigen::Matrix3d axes_;
+    Eigen::Vector3d origin_;
+    std::array<int, 3> n_{0, 0, 0};
+    std::vector<uint8_t> cells_;
+};
+
+//! Places a grain at world point p, or in the nearest free cell around it.
+bool place_grain(Frame& frame, const Eigen::Vector3d& p, std::vector<size_t>& grains) {
+    int x, y, z;
+    if (!frame.cell_of(p, x, y, z)) return false;
+    auto& cells = frame.cells();
+    for (int radius = 0; radius <= 3; ++radius)
+        for (int dz = -radius; dz <= radius; ++dz)
+            for (int dy = -radius; dy <= radius; ++dy)
+                for (int dx = -radius; dx <= radius; ++dx) {
+                    if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != radius) continue;
+                    if (!frame.inside(x + dx, y + dy, z + dz)) continue;
+                    const size_t i = frame.index(x + dx, y + dy, z + dz);
+                    if (cells[i] != kFree) continue;
+                    cells[i] = kGrain;
+                    grains.push_back(i);
+                    return true;
+                }
+    return false;
+}
+
+//! Runs falls and topples until the pile rests; returns how many grains left.
+size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose, int window, Progress& progress) {
+    auto& cells = frame.cells();
+    const auto& n = frame.size();
+    const size_t column_stride = size_t(n[2]);
+    const int directions[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
+    double threshold[8];
+    for (int d = 0; d < 8; ++d) threshold[d] = window * (d < 4 ? 1.0 : std::sqrt(2.0)) * tan_repose;
+    const size_t removed_mark = SIZE_MAX;
+    size_t removed = 0;
+    const int max_passes = 8 * (n[0] + n[1] + n[2]) + 100;
+    for (int pass = 0; pass < max_passes; ++pass) {
+        if (progress.cancelled()) break;
+        size_t moved = 0;
+        for (size_t g = 0; g < grains.size(); ++g) {
+            size_t i = grains[g];
+            int z = int(i % n[2]), y = int((i / n[2]) % n[1]), x = int(i / (column_stride * n[1]));
+            // Fall.
+            bool fell = false;
+            while (z > 0 && (cells[i - 1] == kFree || cells[i - 1] == kOutside)) {
+                cells[i] = kFree;
+                --i;
+                --z;
+                fell = true;
+                if (cells[i] == kOutside) break;
+                cells[i] = kGrain;
+            }
+            if (fell) {
+                ++moved;
+                if (cells[i] == kOutside) {
+                    grains[g] = removed_mark;
+                    ++removed;
+                    continue;
+                }
+                grains[g] = i;
+                continue;
+            }
+            if (z + 1 < n[2] && cells[i + 1] == kGrain) continue;  // buried
+            // Topple toward the steepest direction that exceeds the repose.
+            int best = -1;
+            double best_slope = 0.0;
+            const int start = int((i * 2654435761u + size_t(pass)) & 7u);
+            for (int k = 0; k < 8; ++k) {
+                const int d = (start + k) & 7;
+                const int dx = directions[d][0], dy = directions[d][1];
+                bool open = true, sink = false;
+                for (int s = 1; s <= window && open && !sink; ++s) {
+                    if (!frame.inside(x + s * dx, y + s * dy, z)) {
+                        open = false;
+                        break;
+                    }
+                    const uint8_t c = cells[frame.index(x + s * dx, y + s * dy, z)];
+                    if (c == kOutside) sink = true;
+                    else if (c != kFree) open = false;
+                }
+                if (!open) continue;
+                double drop = HUGE_VAL;
+                if (!sink) {
+                    const int ax = x + window * dx, ay = y + window * dy;
+                    const int deepest = std::max(0, z - int(std::ceil(threshold[d])) - 1);
+                    for (int zz = z - 1; zz >= deepest; --zz) {
+                        const uint8_t c = cells[frame.index(ax, ay, zz)];
+                        if (c == kOutside) break;
+                        if (c != kFree) {
+                            drop = z - zz;
+                            break;
+                        }
+                    }
+                }
+                if (drop <= threshold[d]) continue;
+                const double slope = drop / threshold[d];
+                if (best < 0 || slope > best_slope) {
+                    best = d;
+                    best_slope = slope;
+                }
+            }
+            if (best < 0) continue;
+            const size_t j = frame.index(x + directions[best][0], y + directions[best][1], z);
+            cells[i] = kFree;
+            ++moved;
+            if (cells[j] == kOutside) {
+                grains[g] = removed_mark;
+                ++removed;
+                continue;
+            }
+            cells[j] = kGrain;
+            grains[g] = j;
+        }
+        if (removed) {
+            size_t kept = 0;
+            for (size_t g = 0; g < grains.size(); ++g)
+                if (grains[g] != removed_mark) grains[kept++] = grains[g];
+            grains.resize(kept);
+        }
+        if (moved == 0) break;
+    }
+    progress.check();
+    return removed;
+}
+
+}  // namespace
+
+SandpileResult simulate_sandpile(const openvdb::FloatGrid& solid, const std::vector<SandpileHole>& holes,
+                                 const SandpileOptions& options, Progress& progress) {
+    progress.stage("powder simulation");
+    if (options.routine.empty()) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the routine has no turn");
+    if (!(options.repose_radians > 0.0 && options.repose_radians < M_PI / 2))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the angle of repose must be between 0 and 90 degrees");
+    if (options.slope_window < 1) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the slope window must be at least 1");
+    const double h = options.cell_size > 0.0 ? options.cell_size : solid.voxelSize()[0];
+    std::vector<Drill> drills;
+    for (const SandpileHole& hole : holes) {
+        const Eigen::Vector3d axis(hole.axis[0], hole.axis[1], hole.axis[2]);
+        if (!(axis.norm() > 0.0) || !(hole.diameter > 0.0))
+            throw Error(FABVDB_ERR_INVALID_ARGUMENT, "a hole needs a direction and a positive diameter");
+        drills.push_back({Eigen::Vector3d(hole.center[0], hole.center[1], hole.center[2]), axis.normalized(),
+                          0.5 * hole.diameter, hole.depth});
+    }
+    const double tan_repose = std::tan(options.repose_radians);
+    const double cell_volume = h * h * h;
+
+    SandpileResult result;
+    std::vector<Eigen::Vector3d> positions;
+    size_t stuck = 0;  // grains that found no free cell when the part turned
+    for (size_t turn = 0; turn < options.routine.size(); ++turn) {
+        progress.update(double(turn) / double(options.routine.size()));
+        const Vec3& g = options.routine[turn];
+        const Eigen::Vector3d gravity(g[0], g[1], g[2]);
+        if (!(gravity.norm() > 0.0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "a turn's gravity is zero");
+        std::vector<char> fill;
+        Frame frame(solid, drills, gravity, h, turn == 0 ? &fill : nullptr);
+        std::vector<size_t> grains;
+        if (turn == 0) {
+            auto& cells = frame.cells();
+            for (size_t i = 0; i < cells.size(); ++i)
+                if (fill[i]) {
+                    cells[i] = kGrain;
+                    grains.push_back(i);
+                }
+            result.initial_volume = double(grains.size()) * cell_volume;
+        } else {
+            for (const Eigen::Vector3d& p : positions)
+                if (!place_grain(frame, p, grains)) ++stuck;
+        }
+        progress.check();
+        settle_pile(frame, grains, tan_repose, options.slope_window, progress);
+        positions.clear();
+        for (size_t i : grains) positions.push_back(frame.world(i));
+        result.residual_after_turn.push_back(double(positions.size() + stuck) * cell_volume);
+    }
+    result.residual_volume = result.residual_after_turn.back();
+    progress.update(1.0);
+    return result;
+}
+
+}  // namespace fabvdb::powder

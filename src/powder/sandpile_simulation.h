@@ -1,0 +1,52 @@
+//! The reference powder simulation that keeps the drainability model honest.
+//! It shares no code with the model: a voxel sand pile. The cavity of the
+//! part (the empty space the outside cannot reach once the holes are plugged)
+//! is filled with powder; the holes are drilled cylinders open to the
+//! outside. For each turn of the routine the part is voxelised in a frame
+//! whose z axis points up (against that turn's gravity); then, until nothing
+//! moves, a grain falls while the cell below it is free, and a grain on the
+//! surface of the pile topples one cell sideways toward a direction where the
+//! ground `slope_window` cells away lies lower than the angle of repose
+//! allows (a slope measured over a few cells, so a one-cell step of a gentle
+//! staircase does not count as steep). Grains that reach the outside are
+//! gone. Between turns the grains keep their world positions. Reports the
+//! powder left inside after each turn. Cancellable (Error(CANCELLED)).
+#pragma once
+
+#include <vector>
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+
+namespace fabvdb::powder {
+
+struct SandpileHole {
+    Vec3 center{0, 0, 0};  //!< where the drill meets the cavity
+    Vec3 axis{0, 0, 1};    //!< unit, out of the cavity
+    double diameter = 4.0;
+    double depth = 0.0;    //!< drilled length along the axis from the center
+};
+
+struct SandpileOptions {
+    double cell_size = 0.0;  //!< mm; 0: the solid grid's voxel size
+    double repose_radians = 0.6108652381980153;  // 35°
+    int slope_window = 4;
+    //! Gravity of each turn, in order.
+    std::vector<Vec3> routine{{0, 0, -1}};
+};
+
+struct SandpileResult {
+    double initial_volume = 0.0;   //!< mm³ of powder in the full cavity
+    double residual_volume = 0.0;  //!< mm³ left inside after the routine
+    std::vector<double> residual_after_turn;
+    double residual_fraction() const { return initial_volume > 0 ? residual_volume / initial_volume : 0.0; }
+};
+
+//! `solid` is the part's level set, negative in its material (the hollow
+//! shell, drilled or not).
+SandpileResult simulate_sandpile(const openvdb::FloatGrid& solid, const std::vector<SandpileHole>& holes,
+                                 const SandpileOptions& options, Progress& progress);
+
+}  // namespace fabvdb::powder

@@ -1,0 +1,55 @@
+// The reference sand-pile simulation on a hollow sphere: powder is conserved
+// without holes in every turn; a hole at the bottom drains; no hole on top
+// drains while the part stays upright; cancellation.
+#include <gtest/gtest.h>
+
+#include "cavity_shapes.h"
+#include "core/error.h"
+#include "powder/sandpile_simulation.h"
+
+namespace {
+
+TEST(Sandpile, ClosedCavityKeepsAllItsPowderAndFillsTheCavity) {
+    const auto part = fabvdb::test::hollow_sphere({0, 0, 0}, 12.0, 2.0, 0.5);
+    fabvdb::powder::SandpileOptions options;
+    options.routine = {{0, 0, -1}, {1, 0, 0}, {0.3, -0.5, 0.8}};
+    fabvdb::Progress progress;
+    const auto result = fabvdb::powder::simulate_sandpile(*part.shell, {}, options, progress);
+    const double cavity = 4.0 / 3.0 * M_PI * 10.0 * 10.0 * 10.0;
+    EXPECT_NEAR(result.initial_volume, cavity, 0.05 * cavity);
+    ASSERT_EQ(result.residual_after_turn.size(), 3u);
+    for (double left : result.residual_after_turn) EXPECT_DOUBLE_EQ(left, result.initial_volume);
+}
+
+TEST(Sandpile, BottomHoleDrainsTopHoleDoesNotWhileUpright) {
+    const auto part = fabvdb::test::hollow_sphere({0, 0, 0}, 12.0, 2.0, 0.5);
+    fabvdb::powder::SandpileOptions options;
+    options.routine = {{0, 0, -1}};
+    fabvdb::Progress progress;
+    const auto bottom =
+        fabvdb::powder::simulate_sandpile(*part.shell, {{{0, 0, -10}, {0, 0, -1}, 4.0, 6.0}}, options, progress);
+    const auto top =
+        fabvdb::powder::simulate_sandpile(*part.shell, {{{0, 0, 10}, {0, 0, 1}, 4.0, 6.0}}, options, progress);
+    EXPECT_LT(bottom.residual_fraction(), 0.5);
+    EXPECT_GT(top.residual_fraction(), 0.98);
+    // Turned over, the top hole is at the bottom and drains too.
+    options.routine = {{0, 0, -1}, {0, 0, 1}};
+    const auto turned =
+        fabvdb::powder::simulate_sandpile(*part.shell, {{{0, 0, 10}, {0, 0, 1}, 4.0, 6.0}}, options, progress);
+    EXPECT_LT(turned.residual_fraction(), 0.5);
+}
+
+TEST(Sandpile, CancelledSimulationThrowsCancelled) {
+    const auto part = fabvdb::test::hollow_sphere({0, 0, 0}, 12.0, 2.0, 0.5);
+    std::atomic<bool> cancel{true};
+    fabvdb::Progress progress(nullptr, nullptr, &cancel);
+    fabvdb::powder::SandpileOptions options;
+    try {
+        fabvdb::powder::simulate_sandpile(*part.shell, {}, options, progress);
+        FAIL() << "a cancelled simulation returned";
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
+    }
+}
+
+}  // namespace
