@@ -30,10 +30,9 @@ fabvdb::surface::DecomposeSettings settings_for(const fabvdb_ctx* ctx, const fab
     require_range(o.parts >= 0, "parts must be >= 0");
     require_range(o.max_parts >= 2, "max_parts must be >= 2");
     require_range(o.draft_degrees >= 0 && o.draft_degrees <= 30, "draft_degrees must be in [0, 30]");
-    require_range(o.w_overhang >= 0 && o.w_overlap >= 0 && o.w_coarse_overlap >= 0 && o.w_smooth >= 0,
+    require_range(o.w_overhang >= 0 && o.w_overlap >= 0 && o.w_coarse_overlap >= 0,
                   "the weights must be >= 0");
     require_range(o.low_res_triangles >= 100, "low_res_triangles must be >= 100");
-    require_range(o.smoothing_iterations >= 0, "smoothing_iterations must be >= 0");
     const fabvdb::BoundingBox box = fabvdb::bounding_box(mesh);
     const double longest = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
     fabvdb::surface::DecomposeSettings s;
@@ -48,7 +47,6 @@ fabvdb::surface::DecomposeSettings settings_for(const fabvdb_ctx* ctx, const fab
     s.decomposition.weights.overhang = o.w_overhang;
     s.decomposition.weights.overlap = o.w_overlap;
     s.decomposition.overlap_weight = o.w_coarse_overlap;
-    s.decomposition.smoothness_weight = o.w_smooth;
     return s;
 }
 
@@ -69,9 +67,7 @@ void fabvdb_decompose_options_init(fabvdb_decompose_options* options) {
     options->w_overhang = 1;
     options->w_overlap = 1;
     options->w_coarse_overlap = 1e6;
-    options->w_smooth = 1;
     options->low_res_triangles = 10000;
-    options->smoothing_iterations = 10;
 }
 
 fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_decompose_options* opts,

@@ -3,7 +3,7 @@
 //! compute each part's parting line for the region's direction, and add a
 //! part until the total moldability energy Σ E_P is below γ (or the part cap
 //! is reached, which keeps the lowest-energy attempt). Also the state a
-//! decomposition is carried in through boundary smoothing, edits and output.
+//! decomposition is carried in through edits and output.
 #pragma once
 
 #include <vector>
@@ -22,7 +22,6 @@ struct DecompositionOptions {
     int max_parts = 16;               //!< cap of the automatic search
     double overlap_weight = 1e6;      //!< w_O
     MoldabilityWeights weights;       //!< w_H, w_L
-    double smoothness_weight = 1.0;   //!< w_l
     int max_iterations = 20;          //!< region-growing iterations
 };
 

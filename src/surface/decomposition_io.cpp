@@ -185,8 +185,7 @@ nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms
     doc["draft_degrees"] = terms.draft * 180.0 / M_PI;
     doc["weights"] = {{"w_H", options.weights.overhang},
                       {"w_L", options.weights.overlap},
-                      {"w_O", options.overlap_weight},
-                      {"w_l", options.smoothness_weight}};
+                      {"w_O", options.overlap_weight}};
     doc["total_moldability_energy"] = decomposition.total_energy();
     doc["low_res_surface"] = {{"vertices", shell.outer.vertices},
                               {"triangles", shell.outer.triangles},

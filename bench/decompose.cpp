@@ -1,0 +1,130 @@
+// Mold decomposition against the thesis' timings (Tables 3.2 and 3.3, single
+// thread, Intel Core i7 2.2 GHz): per model, at the thesis' S_low size, the
+// pre-computation per direction, the coarse decomposition per iteration, the
+// part count, and the cut and merge edits; each next to the thesis' figure
+// as a ratio (thesis / ours, > 1 is faster). Runs single-threaded unless
+// --threads N is given. Usage: bench_decompose [--threads N] [model ...]
+#include <tbb/global_control.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "io/mesh_io.h"
+#include "surface/decompose.h"
+#include "surface/vec3_ops.h"
+
+using namespace fabvdb;
+using namespace fabvdb::surface;
+
+namespace {
+
+struct ThesisRow {
+    const char* name;
+    const char* file;
+    size_t low_res;           // S_low triangles in Table 3.2
+    double per_direction_ms;  // pre-computation per direction
+    double per_iteration_ms;  // coarse decomposition per iteration
+    int parts;
+    double cut_ms, merge_ms;  // Table 3.3
+};
+
+const ThesisRow rows[] = {
+    {"sphere", "sphere.obj", 320, 3.84, 11.0, 2, 5.60, 26.2},
+    {"torus", "torus.obj", 1152, 34.9, 82.0, 2, 15.0, 71.4},
+    {"kitten", "kitten.obj", 2310, 136, 396, 2, 47.4, 209},
+    {"airplane", "airplane.obj", 19136, 13910.28, 31711, 2, 692, 1872},
+    {"fertility", "fertility.off", 8788, 2011.67, 4886.17, 2, 208, 891},
+    {"bunny", "bunny.off", 2740, 210, 2110, 2, 53.2, 232},
+};
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int threads = 1;
+    std::vector<std::string> only;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
+            threads = std::atoi(argv[++i]);
+        else
+            only.push_back(argv[i]);
+    }
+    tbb::global_control control(tbb::global_control::max_allowed_parallelism, size_t(std::max(threads, 1)));
+    std::printf("threads %d; ratio = thesis / ours (higher is faster)\n", threads);
+    std::printf("%-10s %7s | %-26s | %-26s | %-11s | %-26s | %-26s | %s\n", "model", "S_low", "precompute/dir ms (ratio)",
+                "coarse/iter ms (ratio)", "parts", "cut ms (ratio)", "merge ms (ratio)", "energy (gamma 0.05)");
+    for (const ThesisRow& row : rows) {
+        if (!only.empty() && std::find(only.begin(), only.end(), row.name) == only.end()) continue;
+        Progress progress;
+        const Mesh input = io::read_mesh(std::string(FABVDB_SHARED_DATA "/meshes/") + row.file, progress);
+        const BoundingBox box = bounding_box(input);
+        DecomposeSettings settings;
+        settings.shell.target_triangles = row.low_res;
+        settings.shell.thickness =
+            0.03 * std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
+        const DecomposeResult r = decompose_mesh(input, settings, {}, progress);
+        const double per_direction = double(r.report["seconds"]["precompute_per_direction"]) * 1000;
+        const nlohmann::json& last = r.report["attempts"].back();
+        const double per_iteration = double(last["seconds_per_iteration"]) * 1000;
+        // Cut: a closed loop around the middle of part 0; merge it back.
+        const Shell& shell = r.shell;
+        Decomposition d = r.decomposition;
+        Vec3 centre{0, 0, 0}, axis{0, 0, 0};
+        size_t count = 0;
+        for (size_t t = 0; t < shell.triangle_count(); ++t)
+            if (d.part_of_triangle[t] == 0) {
+                const Triangle& f = shell.outer.triangles[t];
+                centre = centre + (1.0 / 3.0) * (shell.outer.vertices[f[0]] + shell.outer.vertices[f[1]] +
+                                                  shell.outer.vertices[f[2]]);
+                ++count;
+            }
+        centre = (1.0 / double(count)) * centre;
+        size_t seed = 0;
+        double nearest = 1e300;
+        for (size_t t = 0; t < shell.triangle_count(); ++t) {
+            if (d.part_of_triangle[t] != 0) continue;
+            const Vec3& p = shell.outer.vertices[shell.outer.triangles[t][0]];
+            if (norm(p - centre) < nearest) nearest = norm(p - centre), seed = t;
+        }
+        const Vec3 p0 = shell.outer.vertices[shell.outer.triangles[seed][0]];
+        axis = shell.normal[seed];
+        const Vec3 u = normalized(cross(axis, std::abs(axis[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
+        const Vec3 v = cross(axis, u);
+        const double ring = 0.08 / shell.unit_scale;
+        Edit cut;
+        cut.type = Edit::cut;
+        cut.closed = true;
+        for (int i = 0; i < 12; ++i)
+            cut.points.push_back(p0 + ring * (std::cos(2 * M_PI * i / 12) * u + std::sin(2 * M_PI * i / 12) * v));
+        double cut_ms = NAN, merge_ms = NAN;
+        try {
+            auto start = std::chrono::steady_clock::now();
+            apply_edit(shell, r.terms, settings.decomposition, cut, 0, d, progress);
+            cut_ms = ms_since(start);
+            Edit merge;
+            merge.type = Edit::merge;
+            merge.points = {p0, p0 + 1.6 * ring * u};
+            start = std::chrono::steady_clock::now();
+            apply_edit(shell, r.terms, settings.decomposition, merge, 1, d, progress);
+            merge_ms = ms_since(start);
+        } catch (const Error& e) {
+            std::fprintf(stderr, "%s: edit skipped: %s\n", row.name, e.what());
+        }
+        std::printf("%-10s %7zu | %9.2f vs %8.2f (%5.1fx) | %9.2f vs %8.0f (%5.1fx) | %2zu (thesis %d) | %8.2f vs %6.1f (%5.1fx) | "
+                    "%8.2f vs %6.1f (%5.1fx) | %.4f\n",
+                    row.name, shell.triangle_count(), per_direction, row.per_direction_ms,
+                    row.per_direction_ms / per_direction, per_iteration, row.per_iteration_ms,
+                    row.per_iteration_ms / per_iteration, r.decomposition.parts.size(), row.parts, cut_ms, row.cut_ms,
+                    row.cut_ms / cut_ms, merge_ms, row.merge_ms, row.merge_ms / merge_ms,
+                    double(r.report["total_moldability_energy"]));
+        std::fflush(stdout);
+    }
+    return 0;
+}
