@@ -18,6 +18,8 @@ double squared_distance(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
+double surface_isovalue(const openvdb::FloatGrid& grid) { return 1e-4 * grid.voxelSize()[0]; }
+
 Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& progress) {
     if (!(adaptivity >= 0.0 && adaptivity <= 1.0))
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "adaptivity must be in [0, 1]");
@@ -25,7 +27,7 @@ Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& p
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
     std::vector<openvdb::Vec4I> quads;
-    openvdb::tools::volumeToMesh(grid, points, triangles, quads, 0.0, adaptivity);
+    openvdb::tools::volumeToMesh(grid, points, triangles, quads, surface_isovalue(grid), adaptivity);
     progress.update(0.8);
 
     Mesh mesh;

@@ -13,6 +13,11 @@
 
 namespace fabvdb::volume {
 
+//! The isovalue the zero surface is extracted at: a ten-thousandth of a voxel
+//! above 0, so samples that are exactly 0 (a flat face through voxel centres)
+//! count as inside instead of making duplicate vertices and folded triangles.
+double surface_isovalue(const openvdb::FloatGrid& grid);
+
 Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& progress);
 
 }  // namespace fabvdb::volume

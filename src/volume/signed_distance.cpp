@@ -21,7 +21,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <openvdb/tools/LevelSetRebuild.h>
 #include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tree/LeafManager.h>
@@ -30,6 +29,7 @@
 #include "volume/memory_estimate.h"
 #include "volume/orient_soup.h"
 #include "volume/progress_interrupter.h"
+#include "volume/rebuild_band.h"
 #include "volume/winding_number.h"
 
 namespace fabvdb::volume {
@@ -300,12 +300,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         StageClock clock(stats, progress, "thicken");
         const double half_thickness = 0.5 * options.thicken;
         grid = unsigned_band(mesh, *transform, float(std::ceil(half_thickness / voxel)) + half_band, progress);
-        openvdb::tools::foreach(grid->beginValueAll(), [&](const openvdb::FloatGrid::ValueAllIter& it) {
-            it.setValue(float(*it - half_thickness));
-        });
-        ProgressInterrupter interrupter(progress);
-        grid = openvdb::tools::levelSetRebuild(*grid, 0.0f, half_band, half_band, nullptr, &interrupter);
-        progress.check();
+        grid = rebuild_band(*grid, half_thickness, options.half_band_voxels, progress);
         stats.thickened = stats.rebuilt = true;
     } else if (band_is_consistent(*grid, voxel)) {
         StageClock clock(stats, progress, "flood fill");
@@ -315,9 +310,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         add_off_band_winding(*grid, *winding, bounding_box(mesh), band_winding, progress);
         band_winding = {};
         progress.stage("rebuild");
-        ProgressInterrupter interrupter(progress);
-        grid = openvdb::tools::levelSetRebuild(*grid, 0.0f, half_band, half_band, nullptr, &interrupter);
-        progress.check();
+        grid = rebuild_band(*grid, 0.0, options.half_band_voxels, progress);
         stats.rebuilt = true;
     }
     grid->setTransform(transform);

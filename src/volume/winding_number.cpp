@@ -14,13 +14,15 @@ constexpr double inverse_four_pi = 0.25 / M_PI;
 
 // Solid angle of triangle (a, b, c) seen from the origin, over 4π
 // (Van Oosterom & Strackee 1983): positive when the triangle winds
-// counter-clockwise seen from the origin's far side.
+// counter-clockwise seen from the origin's far side. From a point in the
+// triangle's plane it is 0 (on the triangle itself ±1/2 would be as right).
 double solid_angle_fraction(const double* a, const double* b, const double* c) {
     const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
     const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
     const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
                        a[2] * (b[0] * c[1] - b[1] * c[0]);
+    if (det == 0.0) return 0.0;
     const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     const double bc = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
     const double ca = c[0] * a[0] + c[1] * a[1] + c[2] * a[2];

@@ -4,8 +4,8 @@
 //! overlapping shells, and varies smoothly across holes (w = 1/2 is the
 //! natural surface that closes them). Evaluated hierarchically after Barill
 //! et al. 2018: a bounding-volume tree over the triangles whose far nodes are
-//! replaced by their dipole (area-weighted normal at the area centroid), and
-//! near leaves summed exactly. Built once, then queried concurrently from any
+//! replaced by their dipole (the area-weighted normal at the area centroid),
+//! and near leaves summed exactly. Built once, then queried concurrently from any
 //! number of threads (queries are const and allocate nothing).
 #pragma once
 

@@ -1,0 +1,42 @@
+//! Removal of small shells from a level set (see drop_small_shells.h).
+#include "volume/drop_small_shells.h"
+
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/LevelSetMeasure.h>
+#include <openvdb/tools/LevelSetUtil.h>
+
+#include "core/error.h"
+
+namespace fabvdb::volume {
+
+ShellCounts drop_small_shells(openvdb::FloatGrid::Ptr& grid, double min_volume, Progress& progress) {
+    if (!(min_volume >= 0.0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "minimum shell volume must be >= 0");
+    progress.stage("shells");
+    std::vector<openvdb::FloatGrid::Ptr> shells;
+    openvdb::tools::segmentSDF(*grid, shells);
+    progress.check();
+    ShellCounts counts;
+    if (min_volume == 0.0) {
+        counts.kept = shells.size();
+        return counts;
+    }
+    std::vector<openvdb::FloatGrid::Ptr> kept;
+    for (size_t i = 0; i < shells.size(); ++i) {
+        if (openvdb::tools::levelSetVolume(*shells[i]) >= min_volume)
+            kept.push_back(shells[i]);
+        else
+            ++counts.dropped;
+        progress.update(double(i + 1) / double(shells.size()));
+    }
+    counts.kept = kept.size();
+    if (counts.dropped == 0) return counts;
+    openvdb::FloatGrid::Ptr result = openvdb::FloatGrid::create(grid->background());
+    result->setTransform(grid->transform().copy());
+    result->setGridClass(openvdb::GRID_LEVEL_SET);
+    result->setName(grid->getName());
+    for (auto& shell : kept) openvdb::tools::csgUnion(*result, *shell);
+    grid = result;
+    return counts;
+}
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,17 @@
+//! A fresh narrow band around one iso-surface of a scalar grid: the surface
+//! {value = isovalue} is extracted and converted back to a signed distance
+//! field (OpenVDB levelSetRebuild), so the result is a true SDF of that
+//! surface (isovalue 0: the grid's own surface made exact; > 0: grown by that
+//! distance). Level set class, name and transform kept. Cancellable.
+#pragma once
+
+#include <openvdb/openvdb.h>
+
+#include "core/progress.h"
+
+namespace fabvdb::volume {
+
+openvdb::FloatGrid::Ptr rebuild_band(const openvdb::FloatGrid& grid, double isovalue, int half_band_voxels,
+                                     Progress& progress);
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,49 @@
+//! `fabvdb repair` as one operation: robust signed distance of a dirty mesh
+//! (signed_distance.h), small shells dropped (drop_small_shells.h), the
+//! surface extracted (extract_mesh.h) and snapped back onto the input where
+//! it is clean (snap_to_mesh.h). The output mesh is closed, 2-manifold,
+//! outward-oriented and free of self-intersections (checked with exact
+//! predicates; walls thinner than a voxel, whose two sides would touch, are
+//! grown by half a voxel until it is). Throws what its stages
+//! throw, and Error(BAD_INPUT) when no shell survives; cancellable.
+#pragma once
+
+#include <cstdint>
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+#include "volume/signed_distance.h"
+
+namespace fabvdb::volume {
+
+struct RepairOptions {
+    SignedDistanceOptions distance;
+    //! Extraction adaptivity in [0, 1] (0: uniform triangles).
+    double adaptivity = 0.0;
+    //! Snap the output onto the input where the input is clean.
+    bool snap = true;
+    //! Shells under this volume (mm³) are dropped; 0 keeps all.
+    double min_shell_volume = 0.0;
+    //! false: stop after the level set (no mesh, no snapping).
+    bool extract = true;
+};
+
+struct RepairResult {
+    openvdb::FloatGrid::Ptr grid;
+    Mesh mesh;
+    SignedDistanceStats distance;  // its timings hold every stage's
+    uint64_t shells_kept = 0;
+    uint64_t shells_dropped = 0;
+    uint64_t snapped_vertices = 0;
+};
+
+RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& progress);
+
+//! The voxel size that puts `resolution` voxels along the longest side of the
+//! mesh's bounding box. Throws Error(INVALID_ARGUMENT) for resolution < 8 and
+//! Error(BAD_INPUT) for a mesh without extent.
+double voxel_size_for_resolution(const Mesh& mesh, int resolution, const std::string& input_name);
+
+}  // namespace fabvdb::volume

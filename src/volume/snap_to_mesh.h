@@ -1,0 +1,21 @@
+//! Snapping of an extracted surface back onto the input it came from, so
+//! clean regions keep sub-voxel fidelity and sharp edges survive better. A
+//! vertex moves to its closest point on the input when that point is within
+//! `max_distance`, the input triangle there faces the same way as the surface
+//! around the vertex (so holes, interior and inverted triangles attract
+//! nothing), and no triangle around it flips or degenerates. Moves that would
+//! make two triangles intersect (exact predicates) are undone. Topology is
+//! unchanged. Parallel; reports progress; throws Error(CANCELLED).
+#pragma once
+
+#include <cstdint>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+
+namespace fabvdb::volume {
+
+//! Returns the number of vertices moved.
+uint64_t snap_to_mesh(Mesh& surface, const Mesh& input, double max_distance, Progress& progress);
+
+}  // namespace fabvdb::volume

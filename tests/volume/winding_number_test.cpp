@@ -1,0 +1,70 @@
+// The hierarchical winding number agrees with the exact sum, is 1 inside and 0
+// outside closed outward shells, counts overlapping shells twice, and is about
+// 1/2 across the mouth of an open box.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "support/shapes.h"
+#include "volume/winding_number.h"
+
+namespace {
+
+using fabvdb::Mesh;
+using fabvdb::volume::WindingNumber;
+
+// The expansion's error stays well under the 1/2 threshold's margin, so the
+// inside/outside decision agrees with the exact sum wherever it is clear.
+TEST(WindingNumber, TreeMatchesExactSum) {
+    const Mesh sphere = fabvdb::test::make_sphere({1, 2, 3}, 10.0, 4);
+    const WindingNumber winding(sphere);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
+    for (int i = 0; i < 2000; ++i) {
+        const fabvdb::Vec3 q{coordinate(random), coordinate(random), coordinate(random)};
+        const double exact = winding.exact(q), fast = winding(q);
+        EXPECT_NEAR(fast, exact, 0.1);
+        if (std::abs(exact - 0.5) > 0.1) EXPECT_EQ(fast >= 0.5, exact >= 0.5);
+    }
+}
+
+TEST(WindingNumber, InsideOneOutsideZero) {
+    const Mesh torus = fabvdb::test::make_torus({0, 0, 0}, 10.0, 3.0, 64, 24);
+    const WindingNumber winding(torus);
+    EXPECT_NEAR(winding({10, 0, 0}), 1.0, 0.1);
+    EXPECT_NEAR(winding({0, -10, 1}), 1.0, 0.1);
+    EXPECT_NEAR(winding({0, 0, 0}), 0.0, 0.1);
+    EXPECT_NEAR(winding({30, 5, 0}), 0.0, 0.1);
+    EXPECT_NEAR(WindingNumber(fabvdb::test::flipped(torus))({10, 0, 0}), -1.0, 0.1);
+}
+
+TEST(WindingNumber, OverlapCountsTwice) {
+    const Mesh both = fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 5.0, 3),
+                                           fabvdb::test::make_sphere({3, 0, 0}, 5.0, 3));
+    const WindingNumber winding(both);
+    EXPECT_NEAR(winding({1.5, 0, 0}), 2.0, 0.1);
+    EXPECT_NEAR(winding({-3, 0, 0}), 1.0, 0.1);
+}
+
+TEST(WindingNumber, HalfAcrossAnOpenFace) {
+    Mesh box = fabvdb::test::make_box({0, 0, 0}, {10, 10, 10});
+    // Remove the two triangles of the face z = 0.
+    Mesh open;
+    open.vertices = box.vertices;
+    for (const auto& t : box.triangles) {
+        bool bottom = true;
+        for (uint32_t v : t) bottom = bottom && box.vertices[v][2] == 0.0;
+        if (!bottom) open.triangles.push_back(t);
+    }
+    ASSERT_EQ(open.triangles.size(), 10u);
+    const WindingNumber winding(open);
+    EXPECT_NEAR(winding({5, 5, 0}), 0.5, 0.1);
+    EXPECT_GT(winding({5, 5, 1}), 0.5);
+    EXPECT_LT(winding({5, 5, -1}), 0.5);
+}
+
+TEST(WindingNumber, EmptyMeshIsZero) {
+    EXPECT_EQ(WindingNumber(Mesh{})({0, 0, 0}), 0.0);
+}
+
+}  // namespace
