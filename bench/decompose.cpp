@@ -6,6 +6,8 @@
 // --threads N is given. Usage: bench_decompose [--threads N] [model ...]
 #include <tbb/global_control.h>
 
+#include <algorithm>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "io/mesh_io.h"
 #include "surface/decompose.h"
 #include "surface/vec3_ops.h"
