@@ -1,0 +1,34 @@
+# decompose_test.sh — `fabvdb decompose`: a run writes the three files and the
+# report; edits from a file are applied (a merge of the two parts of the torus
+# leaves one part); bad options exit 1 and a bad edits file exits 2, both
+# without creating the output folder; `fabvdb info` reads decomposition.ply.
+source "$(dirname "$0")/lib.sh"
+
+expect_exit 0 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/torus" --low-res 1200 --report "$WORK/r.json" --quiet
+expect_match "$STDOUT" '^2 parts'
+for f in decomposition.json decomposition.ply deformation.ply; do
+  if [ -f "$WORK/torus/$f" ]; then passed=$((passed + 1)); else fail "missing $WORK/torus/$f"; fi
+done
+expect_match "$(cat "$WORK/r.json")" '"part_count": 2'
+expect_match "$(cat "$WORK/torus/decomposition.json")" '"parting_direction"'
+expect_exit 0 "$FABVDB" info "$WORK/torus/decomposition.ply"
+
+# Merge the two parts through points on the outer equator of the torus (one on each part: they split across the y axis).
+cat > "$WORK/merge.json" <<'JSON'
+{"edits": [{"type": "merge", "points": [[1.0, 0.25, 0.0], [1.0, -0.25, 0.0]]}]}
+JSON
+expect_exit 0 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/merged" --low-res 1200 --edits "$WORK/merge.json" \
+  --report "$WORK/m.json" --quiet
+expect_match "$STDOUT" '^1 parts'
+expect_match "$(cat "$WORK/m.json")" '"type": "merge"'
+
+cat > "$WORK/bad.json" <<'JSON'
+{"edits": [{"type": "cut", "points": [[0, 0, 0]]}]}
+JSON
+expect_exit 2 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/bad" --low-res 1200 --edits "$WORK/bad.json" --quiet
+expect_match "$STDERR" 'at least two points'
+expect_no_file "$WORK/bad"
+expect_exit 1 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/bad" --parts two
+expect_exit 1 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/bad" --gamma -1
+expect_no_file "$WORK/bad"
+finish
