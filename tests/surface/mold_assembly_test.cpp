@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "support/ray_cast.h"
+#include "support/mold_shapes.h"
 #include "support/shapes.h"
 #include "surface/mold_assembly.h"
 
@@ -19,43 +20,6 @@ namespace {
 
 using fabvdb::Mesh;
 using fabvdb::Vec3;
-
-// The upper half of a spherical shell (outer radius R, inner r): outer and
-// inner domes joined by a flat ring at z = 0.
-Mesh dome_shell(double outer, double inner, int rings, int segments) {
-    Mesh mesh;
-    auto ring_vertex = [&](double radius, int ring, int segment) {
-        const double elevation = 0.5 * M_PI * double(ring) / rings;  // ring 0: the equator
-        const double azimuth = 2 * M_PI * segment / segments;
-        return Vec3{radius * std::cos(elevation) * std::cos(azimuth), radius * std::cos(elevation) * std::sin(azimuth),
-                    radius * std::sin(elevation)};
-    };
-    for (double radius : {outer, inner}) {
-        for (int ring = 0; ring < rings; ++ring)
-            for (int s = 0; s < segments; ++s) mesh.vertices.push_back(ring_vertex(radius, ring, s));
-        mesh.vertices.push_back({0, 0, radius});
-    }
-    const uint32_t inner_base = uint32_t(rings * segments + 1);
-    auto index = [&](uint32_t base, int ring, int s) { return base + uint32_t(ring * segments + (s % segments)); };
-    for (uint32_t base : {0u, inner_base}) {
-        const bool outward = base == 0;
-        auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
-            mesh.triangles.push_back(outward ? fabvdb::Triangle{a, b, c} : fabvdb::Triangle{a, c, b});
-        };
-        for (int ring = 0; ring + 1 < rings; ++ring)
-            for (int s = 0; s < segments; ++s) {
-                add(index(base, ring, s), index(base, ring, s + 1), index(base, ring + 1, s + 1));
-                add(index(base, ring, s), index(base, ring + 1, s + 1), index(base, ring + 1, s));
-            }
-        const uint32_t pole = base + uint32_t(rings * segments);
-        for (int s = 0; s < segments; ++s) add(index(base, rings - 1, s), index(base, rings - 1, s + 1), pole);
-    }
-    for (int s = 0; s < segments; ++s) {  // the flat ring, facing down
-        mesh.triangles.push_back({index(0, 0, s), index(inner_base, 0, s + 1), index(0, 0, s + 1)});
-        mesh.triangles.push_back({index(0, 0, s), index(inner_base, 0, s), index(inner_base, 0, s + 1)});
-    }
-    return mesh;
-}
 
 Mesh mirrored_z(Mesh mesh) {
     for (Vec3& p : mesh.vertices) p[2] = -p[2];
@@ -276,7 +240,7 @@ void check_mold(const Mesh& part, const Vec3& d, const fabvdb::surface::MoldPair
 }
 
 TEST(MoldAssembly, SphereSplitAtTheEquator) {
-    const Mesh upper = dome_shell(15.0, 12.0, 12, 48);
+    const Mesh upper = fabvdb::test::make_dome_shell(15.0, 12.0, 12, 48);
     const Mesh lower = mirrored_z(upper);
     fabvdb::Progress progress;
     fabvdb::surface::MoldOptions options;
@@ -294,7 +258,7 @@ TEST(MoldAssembly, SphereSplitAtTheEquator) {
 
 TEST(MoldAssembly, TiltedShell) {
     const Vec3 axis{0.48, -0.6, 0.64};
-    const Mesh shell = rotated_to(dome_shell(15.0, 12.0, 10, 40), axis);
+    const Mesh shell = rotated_to(fabvdb::test::make_dome_shell(15.0, 12.0, 10, 40), axis);
     fabvdb::Progress progress;
     fabvdb::surface::MoldOptions options;
     options.margin = 8.0;
@@ -328,7 +292,7 @@ TEST(MoldAssembly, CancelledAssemblyThrowsCancelled) {
     std::atomic<bool> cancel{true};
     fabvdb::Progress progress(nullptr, nullptr, &cancel);
     try {
-        fabvdb::surface::assemble_mold(dome_shell(15, 12, 6, 24), {0, 0, 1}, {}, progress);
+        fabvdb::surface::assemble_mold(fabvdb::test::make_dome_shell(15, 12, 6, 24), {0, 0, 1}, {}, progress);
         FAIL() << "expected cancellation";
     } catch (const fabvdb::Error& e) {
         EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
