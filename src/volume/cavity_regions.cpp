@@ -1,0 +1,123 @@
+//! Void regions of a cavity surface (see cavity_regions.h).
+#include "volume/cavity_regions.h"
+
+#include <cmath>
+#include <numeric>
+
+namespace fabvdb::volume {
+
+namespace {
+
+struct Components {
+    std::vector<uint32_t> parent;
+    explicit Components(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t find(uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    }
+    void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
+};
+
+double signed_tetra_volume(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+            a[2] * (b[0] * c[1] - b[1] * c[0])) /
+           6.0;
+}
+
+//! Whether the ray from `origin` along a fixed generic direction crosses
+//! triangle abc (Möller–Trumbore).
+bool ray_crosses(const Vec3& origin, const Vec3& a, const Vec3& b, const Vec3& c) {
+    static const double direction[3] = {0.8372, 0.3127, 0.4487};
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double p[3] = {direction[1] * e2[2] - direction[2] * e2[1], direction[2] * e2[0] - direction[0] * e2[2],
+                         direction[0] * e2[1] - direction[1] * e2[0]};
+    const double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+    if (std::abs(det) < 1e-300) return false;
+    const double s[3] = {origin[0] - a[0], origin[1] - a[1], origin[2] - a[2]};
+    const double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
+    if (u < 0.0 || u > 1.0) return false;
+    const double q[3] = {s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2], s[0] * e1[1] - s[1] * e1[0]};
+    const double v = (direction[0] * q[0] + direction[1] * q[1] + direction[2] * q[2]) / det;
+    if (v < 0.0 || u + v > 1.0) return false;
+    return (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det > 0.0;
+}
+
+}  // namespace
+
+std::vector<CavityRegion> split_cavity_regions(const Mesh& cavity_surface) {
+    const Mesh& mesh = cavity_surface;
+    Components components(mesh.vertices.size());
+    for (const Triangle& t : mesh.triangles) {
+        components.unite(t[0], t[1]);
+        components.unite(t[1], t[2]);
+    }
+    // Shells, numbered in order of first triangle.
+    std::vector<int> shell_of_root(mesh.vertices.size(), -1);
+    std::vector<std::vector<uint32_t>> shell_triangles;
+    for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+        const uint32_t root = components.find(mesh.triangles[t][0]);
+        if (shell_of_root[root] < 0) {
+            shell_of_root[root] = int(shell_triangles.size());
+            shell_triangles.emplace_back();
+        }
+        shell_triangles[size_t(shell_of_root[root])].push_back(t);
+    }
+    std::vector<double> shell_volume(shell_triangles.size(), 0.0);
+    for (size_t s = 0; s < shell_triangles.size(); ++s)
+        for (uint32_t t : shell_triangles[s]) {
+            const Triangle& tri = mesh.triangles[t];
+            shell_volume[s] += signed_tetra_volume(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
+        }
+
+    // Each outer shell starts a region; each island joins the smallest outer
+    // shell around one of its vertices.
+    std::vector<int> region_of_shell(shell_triangles.size(), -1);
+    std::vector<size_t> region_outer;
+    for (size_t s = 0; s < shell_triangles.size(); ++s)
+        if (shell_volume[s] > 0.0) {
+            region_of_shell[s] = int(region_outer.size());
+            region_outer.push_back(s);
+        }
+    for (size_t s = 0; s < shell_triangles.size(); ++s) {
+        if (region_of_shell[s] >= 0) continue;
+        const Vec3& probe = mesh.vertices[mesh.triangles[shell_triangles[s].front()][0]];
+        double smallest = INFINITY;
+        for (size_t r = 0; r < region_outer.size(); ++r) {
+            const size_t outer = region_outer[r];
+            if (shell_volume[outer] >= smallest) continue;
+            size_t crossings = 0;
+            for (uint32_t t : shell_triangles[outer]) {
+                const Triangle& tri = mesh.triangles[t];
+                crossings += ray_crosses(probe, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
+            }
+            if (crossings % 2 == 1) {
+                smallest = shell_volume[outer];
+                region_of_shell[s] = int(r);
+            }
+        }
+    }
+
+    std::vector<CavityRegion> regions(region_outer.size());
+    std::vector<uint32_t> new_index(mesh.vertices.size(), UINT32_MAX);
+    for (size_t s = 0; s < shell_triangles.size(); ++s) {
+        if (region_of_shell[s] < 0) continue;  // an island outside every outer shell bounds no void
+        CavityRegion& region = regions[size_t(region_of_shell[s])];
+        region.volume += shell_volume[s];
+        for (uint32_t t : shell_triangles[s]) {
+            Triangle out;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = mesh.triangles[t][k];
+                if (new_index[v] == UINT32_MAX) {
+                    new_index[v] = uint32_t(region.surface.vertices.size());
+                    region.surface.vertices.push_back(mesh.vertices[v]);
+                }
+                out[k] = new_index[v];
+            }
+            region.surface.triangles.push_back(out);
+        }
+    }
+    return regions;
+}
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,238 @@
+//! Hollowing (see hollow.h): outer surface, interior distance band, cavity
+//! offset and opening, exact snap, void regions, separation proof.
+#include "volume/hollow.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include <openvdb/tools/LevelSetRebuild.h>
+#include <openvdb/tools/MeshToVolume.h>
+#include <openvdb/tools/ValueTransformer.h>
+
+#include "core/error.h"
+#include "volume/cavity_regions.h"
+#include "volume/clean_solid.h"
+#include "volume/extract_mesh.h"
+#include "volume/memory_estimate.h"
+#include "volume/progress_interrupter.h"
+#include "volume/signed_distance.h"
+#include "volume/snap_to_offset.h"
+#include "volume/surfaces_disjoint.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+//! Records the seconds from its creation to the next `lap` under a name.
+class StageClock {
+public:
+    explicit StageClock(std::map<std::string, double>& timings) : timings_(timings), start_(Clock::now()) {}
+    void lap(const std::string& name) {
+        const auto now = Clock::now();
+        timings_[name] += std::chrono::duration<double>(now - start_).count();
+        start_ = now;
+    }
+
+private:
+    std::map<std::string, double>& timings_;
+    Clock::time_point start_;
+};
+
+void require(bool ok, const std::string& message) {
+    if (!ok) throw Error(FABVDB_ERR_INVALID_ARGUMENT, message);
+}
+
+void validate(const HollowOptions& o) {
+    require(std::isfinite(o.wall) && o.wall > 0.0, "wall must be > 0 mm");
+    require(std::isfinite(o.closing) && o.closing >= 0.0, "closing distance must be >= 0 mm");
+    require(std::isfinite(o.voxel_size) && o.voxel_size >= 0.0, "voxel size must be > 0 mm (0: automatic)");
+    require(o.voxel_size == 0.0 || o.voxel_size <= o.wall,
+            "voxel size must not exceed the wall (a wall needs at least one voxel)");
+    require(o.adaptivity >= 0.0 && o.adaptivity <= 1.0, "adaptivity must be in [0, 1]");
+    require(std::isfinite(o.min_cavity_volume) && o.min_cavity_volume >= 0.0, "minimum cavity volume must be >= 0");
+}
+
+double signed_volume(const Mesh& mesh) {
+    double volume = 0.0;
+    for (const Triangle& t : mesh.triangles) {
+        const Vec3& a = mesh.vertices[t[0]];
+        const Vec3& b = mesh.vertices[t[1]];
+        const Vec3& c = mesh.vertices[t[2]];
+        volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                  a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+    return volume / 6.0;
+}
+
+//! Distance band of the solid reaching `interior_depth` mm inside, with the
+//! closest outer triangle of every band voxel (for the exact snap).
+struct SolidDistance {
+    openvdb::FloatGrid::Ptr distance;
+    openvdb::Int32Grid::Ptr closest_triangle;
+};
+
+SolidDistance solid_distance(const Mesh& outer, double voxel, double interior_depth, Progress& progress) {
+    progress.stage("interior distance");
+    auto transform = openvdb::math::Transform::createLinearTransform(voxel);
+    std::vector<openvdb::Vec3s> points(outer.vertices.size());
+    for (size_t i = 0; i < points.size(); ++i)
+        points[i] = openvdb::Vec3s(
+            transform->worldToIndex(openvdb::Vec3d(outer.vertices[i][0], outer.vertices[i][1], outer.vertices[i][2])));
+    std::vector<openvdb::Vec3I> triangles(outer.triangles.size());
+    for (size_t i = 0; i < triangles.size(); ++i)
+        triangles[i] = openvdb::Vec3I(outer.triangles[i][0], outer.triangles[i][1], outer.triangles[i][2]);
+    openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
+    ProgressInterrupter interrupter(progress);
+    SolidDistance solid;
+    solid.closest_triangle = openvdb::Int32Grid::create();
+    solid.distance = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
+        interrupter, adapter, *transform, 2.0f, float(interior_depth / voxel + 3.0), 0, solid.closest_triangle.get());
+    progress.check();
+    solid.distance->setGridClass(openvdb::GRID_LEVEL_SET);
+    return solid;
+}
+
+//! A copy of `grid` with `offset` added to every value (tiles and background
+//! too), so that its `-offset` iso-surface becomes the zero one.
+openvdb::FloatGrid::Ptr shifted(const openvdb::FloatGrid& grid, float offset) {
+    openvdb::FloatGrid::Ptr copy = grid.deepCopy();
+    openvdb::tools::foreach(copy->beginValueAll(), [offset](const openvdb::FloatGrid::ValueAllIter& it) {
+        it.setValue(*it + offset);
+    });
+    copy->tree().root().setBackground(grid.background() + offset, false);
+    return copy;
+}
+
+//! The deepest value of a solid's distance band (tiles included), as a depth.
+double deepest(const openvdb::FloatGrid& grid) {
+    float lowest = 0.0f;
+    for (auto it = grid.cbeginValueAll(); it; ++it) lowest = std::min(lowest, *it);
+    return -double(lowest);
+}
+
+void check_budget(const Mesh& outer, const HollowOptions& o, double voxel) {
+    if (o.memory_budget_bytes == 0) return;
+    const double area = surface_area(outer);
+    const int half_band = int(std::ceil(0.5 * ((o.wall + o.closing) / voxel + 5.0)));
+    const uint64_t bytes = estimate_level_set_bytes(area, voxel, half_band);
+    if (bytes <= o.memory_budget_bytes) return;
+    std::ostringstream message;
+    message.precision(3);
+    message << o.input_name << ": hollowing at voxel " << voxel << " mm needs ~" << double(bytes) / double(1ull << 30)
+            << " GiB (budget " << double(o.memory_budget_bytes) / double(1ull << 30) << " GiB); --voxel "
+            << voxel_size_for_budget(area, half_band, o.memory_budget_bytes) << "mm fits";
+    throw Error(FABVDB_ERR_OUT_OF_BUDGET, message.str());
+}
+
+Mesh flipped(Mesh mesh) {
+    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+    return mesh;
+}
+
+void append(Mesh& to, const Mesh& from) {
+    const uint32_t base = uint32_t(to.vertices.size());
+    to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+    for (const Triangle& t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+}  // namespace
+
+double automatic_hollow_voxel(double wall) { return wall / 4.0; }
+
+HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& progress) {
+    validate(options);
+    validate_mesh(input, options.input_name);
+    if (input.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangles");
+    openvdb::initialize();
+    HollowResult result;
+    StageClock clock(result.timings);
+    const double voxel = options.voxel_size > 0.0 ? options.voxel_size : automatic_hollow_voxel(options.wall);
+    result.voxel_size = voxel;
+
+    // The outer surface: the input itself when it is clean, else the surface
+    // of its robust signed distance.
+    check_budget(input, options, voxel);
+    Mesh outer;
+    if (is_clean_solid(input, progress)) {
+        outer = input;
+        result.outer_kept = true;
+        clock.lap("check input");
+    } else {
+        clock.lap("check input");
+        SignedDistanceOptions repair;
+        repair.voxel_size = voxel;
+        repair.memory_budget_bytes = options.memory_budget_bytes;
+        repair.input_name = options.input_name;
+        outer = extract_mesh(*signed_distance_from_mesh(input, repair, progress), 0.0, progress);
+        clock.lap("repair");
+    }
+    result.volume_solid = signed_volume(outer);
+
+    // Distances down to the deepest iso-surface the cavity needs.
+    const double depth = options.wall + options.closing;
+    const SolidDistance solid = solid_distance(outer, voxel, depth, progress);
+    clock.lap("interior distance");
+    const double thickest = deepest(*solid.distance);
+    if (thickest <= options.wall) {
+        std::ostringstream message;
+        message.precision(3);
+        message << options.input_name << ": wall " << options.wall
+                << " mm leaves no cavity: the part is nowhere thicker than " << 2.0 * thickest << " mm";
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, message.str());
+    }
+
+    // The cavity: offset by -wall, or opened by the closing distance.
+    progress.stage("cavity offset");
+    openvdb::FloatGrid::Ptr cavity;
+    if (options.closing > 0.0) {
+        ProgressInterrupter interrupter(progress);
+        openvdb::FloatGrid::Ptr core = openvdb::tools::levelSetRebuild(
+            *solid.distance, float(-depth), float(options.closing / voxel + 3.0), 3.0f, nullptr, &interrupter);
+        progress.check();
+        cavity = shifted(*core, float(-options.closing));
+    } else {
+        cavity = shifted(*solid.distance, float(options.wall));
+    }
+    clock.lap("cavity offset");
+    Mesh cavity_surface = extract_mesh(*cavity, options.adaptivity, progress);
+    cavity.reset();
+    clock.lap("cavity extraction");
+
+    const OffsetSnap snap = options.closing == 0.0 ? OffsetSnap::exact : OffsetSnap::at_least;
+    const SnapStats snapped =
+        snap_to_offset(cavity_surface, outer, *solid.closest_triangle, options.wall, snap, progress);
+    result.min_wall_at_vertices = snapped.min_depth;
+    clock.lap("snap");
+
+    // Keep the voids large enough, fill the others.
+    Mesh kept;
+    for (const CavityRegion& region : split_cavity_regions(cavity_surface)) {
+        if (region.volume >= options.min_cavity_volume && region.volume > 0.0) {
+            result.cavity_volumes.push_back(region.volume);
+            append(kept, region.surface);
+        } else {
+            result.filled_cavity_volumes.push_back(region.volume);
+        }
+    }
+    clock.lap("cavity regions");
+    require_disjoint_surfaces(outer, kept, options.input_name, progress);
+    clock.lap("separation check");
+
+    result.mesh = std::move(outer);
+    append(result.mesh, flipped(std::move(kept)));
+    result.volume_shell = result.volume_solid;
+    for (double v : result.cavity_volumes) result.volume_shell -= v;
+    return result;
+}
+
+openvdb::FloatGrid::Ptr shell_level_set(const Mesh& hollowed, double voxel_size, Progress& progress) {
+    SignedDistanceOptions options;
+    options.voxel_size = voxel_size;
+    options.input_name = "hollowed mesh";
+    return signed_distance_from_mesh(hollowed, options, progress);
+}
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,59 @@
+//! Hollowing for printing: keeps a wall of thickness `wall` under the outer
+//! surface and empties the rest. The input may be dirty (it is repaired
+//! through the robust signed distance first); a clean closed input keeps its
+//! own outer triangles. The cavity is the interior offset by −wall (opened by
+//! the closing distance like PrusaSlicer's: offset by −(wall + closing), then
+//! by +closing), extracted from a narrow band whose interior reaches that
+//! depth, its vertices snapped to the exact offset of the outer triangles.
+//! Guarantees: outer shells face out, cavity shells face in, every shell is
+//! closed and no cavity triangle touches the outer surface (checked exactly);
+//! regions thinner than 2·wall stay solid; voids under `min_cavity_volume`
+//! are filled. Cancellable; the
+//! memory budget is checked before any grid is built.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+
+namespace fabvdb::volume {
+
+struct HollowOptions {
+    double wall = 0.0;               //!< mm, > 0
+    double closing = 0.0;            //!< mm, >= 0
+    double voxel_size = 0.0;         //!< mm; 0: automatic (see automatic_hollow_voxel)
+    double adaptivity = 0.0;         //!< [0, 1], of the cavity extraction
+    double min_cavity_volume = 0.0;  //!< mm³: smaller voids are filled
+    uint64_t memory_budget_bytes = 0;  //!< 0: no limit
+    std::string input_name = "mesh";   //!< for messages
+};
+
+struct HollowResult {
+    Mesh mesh;                   //!< outer shells, then the cavity shells
+    bool outer_kept = false;     //!< the input's own triangles are the outer surface
+    double voxel_size = 0.0;
+    double volume_solid = 0.0;   //!< mm³ enclosed by the outer surface
+    double volume_shell = 0.0;   //!< mm³ of material left
+    std::vector<double> cavity_volumes;         //!< mm³ per void kept
+    std::vector<double> filled_cavity_volumes;  //!< mm³ per void filled (under the minimum)
+    double min_wall_at_vertices = 0.0;          //!< smallest cavity-vertex distance to the outer surface
+    std::map<std::string, double> timings;      //!< seconds per stage
+};
+
+//! wall / 4, so the cavity's rounded concave parts (radius >= wall) are
+//! resolved to a small fraction of a voxel; the snap makes the wall exact.
+double automatic_hollow_voxel(double wall);
+
+HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& progress);
+
+//! The shell as a level set (negative in the material) at `voxel_size`: the
+//! signed distance of a hollowed mesh's surfaces.
+openvdb::FloatGrid::Ptr shell_level_set(const Mesh& hollowed, double voxel_size, Progress& progress);
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,281 @@
+// Hollowing: checked on the output mesh with code that shares nothing with
+// the hollowing (CGAL surface mesh, components, self-intersection, AABB
+// distances from samples on every cavity triangle to the outer triangles).
+#include "volume/hollow.h"
+
+#include <gtest/gtest.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "core/error.h"
+#include "io/mesh_io.h"
+#include "support/shapes.h"
+
+namespace fabvdb::volume {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using Triangle3 = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+//! The output split by component: outer shells (positive volume), cavity
+//! shells (negative), each as CGAL triangles; plus whether it is one closed,
+//! manifold, non-self-intersecting surface.
+struct Inspected {
+    bool manifold = true, closed = false, self_intersecting = true;
+    bool cavity_self_intersecting = true, cavity_touches_outer = true;
+    std::vector<Triangle3> outer, cavity;
+    double outer_volume = 0, cavity_volume = 0;  // cavity_volume > 0
+};
+
+Inspected inspect(const Mesh& mesh) {
+    Inspected result;
+    SurfaceMesh surface;
+    std::vector<SurfaceMesh::Vertex_index> vertex;
+    for (const Vec3& p : mesh.vertices) vertex.push_back(surface.add_vertex(Point(p[0], p[1], p[2])));
+    for (const Triangle& t : mesh.triangles)
+        if (surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) == SurfaceMesh::null_face())
+            result.manifold = false;
+    if (!result.manifold) return result;
+    result.closed = CGAL::is_closed(surface);
+    result.self_intersecting = CGAL::Polygon_mesh_processing::does_self_intersect(surface);
+    auto component = surface.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:component", 0).first;
+    const std::size_t count = CGAL::Polygon_mesh_processing::connected_components(surface, component);
+    std::vector<double> volume(count, 0.0);
+    for (auto f : surface.faces()) {
+        auto h = surface.halfedge(f);
+        const Point a = surface.point(surface.source(h)), b = surface.point(surface.target(h)),
+                    c = surface.point(surface.target(surface.next(h)));
+        volume[component[f]] += CGAL::scalar_product(a - CGAL::ORIGIN, CGAL::cross_product(b - CGAL::ORIGIN, c - CGAL::ORIGIN)) / 6.0;
+    }
+    for (auto f : surface.faces()) {
+        auto h = surface.halfedge(f);
+        const Triangle3 triangle(surface.point(surface.source(h)), surface.point(surface.target(h)),
+                                 surface.point(surface.target(surface.next(h))));
+        (volume[component[f]] > 0 ? result.outer : result.cavity).push_back(triangle);
+    }
+    for (double v : volume) (v > 0 ? result.outer_volume : result.cavity_volume) += std::abs(v);
+
+    SurfaceMesh cavity_surface;
+    std::map<SurfaceMesh::Vertex_index, SurfaceMesh::Vertex_index> copied;
+    const auto copy = [&](SurfaceMesh::Vertex_index v) {
+        auto [it, added] = copied.emplace(v, SurfaceMesh::Vertex_index());
+        if (added) it->second = cavity_surface.add_vertex(surface.point(v));
+        return it->second;
+    };
+    for (auto f : surface.faces()) {
+        if (volume[component[f]] > 0) continue;
+        auto h = surface.halfedge(f);
+        cavity_surface.add_face(copy(surface.source(h)), copy(surface.target(h)), copy(surface.target(surface.next(h))));
+    }
+    result.cavity_self_intersecting = CGAL::Polygon_mesh_processing::does_self_intersect(cavity_surface);
+    Tree outer_tree(result.outer.begin(), result.outer.end());
+    result.cavity_touches_outer = false;
+    for (const Triangle3& t : result.cavity) result.cavity_touches_outer |= outer_tree.do_intersect(t);
+    return result;
+}
+
+//! Distances from samples of every cavity triangle (corners, edge midpoints,
+//! centroid) to the outer triangles, sorted.
+std::vector<double> wall_samples(const Inspected& shells) {
+    Tree tree(shells.outer.begin(), shells.outer.end());
+    tree.accelerate_distance_queries();
+    std::vector<double> distances;
+    for (const Triangle3& t : shells.cavity) {
+        const Point samples[] = {t[0], t[1], t[2], CGAL::midpoint(t[0], t[1]), CGAL::midpoint(t[1], t[2]),
+                                 CGAL::midpoint(t[2], t[0]), CGAL::centroid(t[0], t[1], t[2])};
+        for (const Point& p : samples) distances.push_back(std::sqrt(tree.squared_distance(p)));
+    }
+    std::sort(distances.begin(), distances.end());
+    return distances;
+}
+
+//! Closed shells; the cavity crosses neither itself nor the outer surface;
+//! and, when the outer surface is the input's own (clean) one, nothing
+//! crosses at all. (A repaired outer surface is the repair's extraction,
+//! checked by its own tests.)
+void expect_valid_shells(const Inspected& shells, const std::string& what, bool outer_is_input = true) {
+    EXPECT_TRUE(shells.manifold) << what;
+    EXPECT_TRUE(shells.closed) << what;
+    EXPECT_FALSE(shells.cavity_self_intersecting) << what;
+    EXPECT_FALSE(shells.cavity_touches_outer) << what;
+    if (outer_is_input) EXPECT_FALSE(shells.self_intersecting) << what;
+}
+
+HollowOptions options_with(double wall, double voxel, double closing = 0.0) {
+    HollowOptions options;
+    options.wall = wall;
+    options.voxel_size = voxel;
+    options.closing = closing;
+    return options;
+}
+
+TEST(Hollow, SphereShellVolumeAndWall) {
+    const double radius = 20.0, wall = 3.0;
+    const Mesh sphere = test::make_sphere({0, 0, 0}, radius, 5);
+    Progress progress;
+    const HollowOptions options = options_with(wall, 0.0);
+    const HollowResult result = hollow(sphere, options, progress);
+    EXPECT_TRUE(result.outer_kept);
+    const Inspected shells = inspect(result.mesh);
+    expect_valid_shells(shells, "sphere");
+    const double expected = 4.0 / 3.0 * M_PI * (std::pow(radius, 3) - std::pow(radius - wall, 3));
+    EXPECT_NEAR(shells.outer_volume - shells.cavity_volume, expected, 0.01 * expected);
+    ASSERT_EQ(result.cavity_volumes.size(), 1u);
+    const std::vector<double> walls = wall_samples(shells);
+    ASSERT_FALSE(walls.empty());
+    EXPECT_GE(walls.front(), wall - result.voxel_size);
+    EXPECT_NEAR(walls[walls.size() / 2], wall, result.voxel_size);
+    // The snap makes the wall exact far below the voxel size.
+    EXPECT_NEAR(walls[walls.size() / 2], wall, 0.05);
+}
+
+TEST(Hollow, BoxWallAtClosingZeroAndClosingRoundsTheCavity) {
+    const Mesh box = test::make_box({0, 0, 0}, {40, 30, 25});
+    Progress progress;
+    const HollowResult sharp = hollow(box, options_with(3.0, 1.0), progress);
+    const Inspected sharp_shells = inspect(sharp.mesh);
+    expect_valid_shells(sharp_shells, "box");
+    const std::vector<double> walls = wall_samples(sharp_shells);
+    EXPECT_GE(walls.front(), 3.0 - 1.0);
+    EXPECT_NEAR(walls[walls.size() / 2], 3.0, 1.0);
+    EXPECT_NEAR(sharp_shells.cavity_volume, 34.0 * 24.0 * 19.0, 0.02 * 34.0 * 24.0 * 19.0);
+
+    const HollowResult rounded = hollow(box, options_with(3.0, 1.0, 4.0), progress);
+    const Inspected rounded_shells = inspect(rounded.mesh);
+    expect_valid_shells(rounded_shells, "box with closing");
+    EXPECT_GE(wall_samples(rounded_shells).front(), 3.0 - 1.0);
+    EXPECT_LT(rounded_shells.cavity_volume, sharp_shells.cavity_volume);
+}
+
+TEST(Hollow, ThinFinStaysSolidThickBodyIsHollow) {
+    // A 30 mm cube with a 2 mm fin (thinner than 2 × 3 mm wall) sticking out of it.
+    const Mesh part = test::merged(test::make_box({0, 0, 0}, {30, 30, 30}), test::make_box({29, 10, 5}, {60, 12, 25}));
+    Progress progress;
+    const HollowResult result = hollow(part, options_with(3.0, 0.5), progress);
+    EXPECT_FALSE(result.outer_kept);  // two overlapping boxes are not a clean surface
+    const Inspected shells = inspect(result.mesh);
+    expect_valid_shells(shells, "fin", result.outer_kept);
+    ASSERT_EQ(result.cavity_volumes.size(), 1u);
+    EXPECT_GT(shells.cavity_volume, 0.8 * 24.0 * 24.0 * 24.0);
+    for (const Triangle3& t : shells.cavity)
+        for (int k = 0; k < 3; ++k) EXPECT_LT(t[k].x(), 30.0 - 2.0) << "cavity in the fin";
+}
+
+TEST(Hollow, SmallCavitiesAreFilled) {
+    const Mesh two = test::merged(test::make_sphere({0, 0, 0}, 15, 4), test::make_sphere({40, 0, 0}, 5, 4));
+    Progress progress;
+    HollowOptions options = options_with(2.0, 0.5);
+    const HollowResult all = hollow(two, options, progress);
+    EXPECT_EQ(inspect(all.mesh).cavity.empty(), false);
+    EXPECT_EQ(all.cavity_volumes.size(), 2u);
+    options.min_cavity_volume = 4.0 / 3.0 * M_PI * 27.0 + 50.0;  // more than the small cavity (r ~ 3)
+    const HollowResult filled = hollow(two, options, progress);
+    EXPECT_EQ(filled.cavity_volumes.size(), 1u);
+    EXPECT_EQ(filled.filled_cavity_volumes.size(), 1u);
+    const Inspected shells = inspect(filled.mesh);
+    expect_valid_shells(shells, "filled");
+    for (const Triangle3& t : shells.cavity) EXPECT_LT(t[0].x(), 20.0);
+}
+
+TEST(Hollow, SharedMeshesHollowIntoClosedDisjointShells) {
+    const std::string folder = FABVDB_SHARED_DATA "/meshes/";
+    // The refusals, with their reasons: triangles that enclose no volume, and
+    // parts nowhere thicker than twice the wall at this scale.
+    const std::map<std::string, fabvdb_status> refused = {
+        {"degenerated.obj", FABVDB_ERR_BAD_INPUT},
+        {"quads_to_stitch.off", FABVDB_ERR_BAD_INPUT},
+        {"multibody.stl", FABVDB_ERR_INVALID_ARGUMENT}};
+    int hollowed = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() == ".md") continue;
+        Progress progress;
+        Mesh mesh = io::read_mesh(entry.path().string(), progress);
+        // Scale to 40 mm so one coarse setting fits all.
+        Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+        for (const Triangle& t : mesh.triangles)
+            for (uint32_t v : t)
+                for (int k = 0; k < 3; ++k) {
+                    lo[k] = std::min(lo[k], mesh.vertices[v][k]);
+                    hi[k] = std::max(hi[k], mesh.vertices[v][k]);
+                }
+        const double scale = 40.0 / std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+        for (Vec3& p : mesh.vertices)
+            for (int k = 0; k < 3; ++k) p[k] = (p[k] - lo[k]) * scale;
+        HollowOptions options = options_with(1.5, 0.75);
+        options.input_name = name;
+        const auto expected = refused.find(name);
+        try {
+            const HollowResult result = hollow(mesh, options, progress);
+            EXPECT_TRUE(expected == refused.end()) << name << " hollowed";
+            const Inspected shells = inspect(result.mesh);
+            expect_valid_shells(shells, name, result.outer_kept);
+            if (!shells.cavity.empty()) EXPECT_GE(wall_samples(shells).front(), 1.5 - 0.75) << name;
+            ++hollowed;
+        } catch (const Error& e) {
+            ASSERT_TRUE(expected != refused.end()) << name << ": " << e.what();
+            EXPECT_EQ(e.status(), expected->second) << name << ": " << e.what();
+        }
+    }
+    EXPECT_EQ(hollowed, 25);
+}
+
+TEST(Hollow, BadParameters) {
+    const Mesh sphere = test::make_sphere({0, 0, 0}, 10, 3);
+    Progress progress;
+    const auto status_of = [&](const HollowOptions& options) {
+        try {
+            hollow(sphere, options, progress);
+        } catch (const Error& e) {
+            return e.status();
+        }
+        return FABVDB_OK;
+    };
+    EXPECT_EQ(status_of(options_with(0.0, 0.5)), FABVDB_ERR_INVALID_ARGUMENT);
+    EXPECT_EQ(status_of(options_with(-1.0, 0.5)), FABVDB_ERR_INVALID_ARGUMENT);
+    EXPECT_EQ(status_of(options_with(12.0, 1.0)), FABVDB_ERR_INVALID_ARGUMENT);  // thicker than the part
+    EXPECT_EQ(status_of(options_with(2.0, 0.5, -1.0)), FABVDB_ERR_INVALID_ARGUMENT);
+    HollowOptions tight = options_with(2.0, 0.001);
+    tight.memory_budget_bytes = 64u << 20;
+    EXPECT_EQ(status_of(tight), FABVDB_ERR_OUT_OF_BUDGET);
+}
+
+TEST(Hollow, CancelReturnsNoResult) {
+    const Mesh sphere = test::make_sphere({0, 0, 0}, 20, 4);
+    for (int cancel_at_call : {1, 3, 6}) {
+        struct Counter {
+            int calls = 0, cancel_at = 0;
+        } counter{0, cancel_at_call};
+        Progress progress(
+            [](void* user, const char*, double) {
+                auto* c = static_cast<Counter*>(user);
+                return ++c->calls >= c->cancel_at ? 1 : 0;
+            },
+            &counter, nullptr);
+        try {
+            hollow(sphere, options_with(3.0, 0.5), progress);
+            ADD_FAILURE() << "not cancelled at call " << cancel_at_call;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace fabvdb::volume
