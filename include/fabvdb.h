@@ -205,6 +205,66 @@ FABVDB_API void fabvdb_volume_free(fabvdb_volume* volume);
 /* ------------------------------------------------------------------------- */
 /* Hollowing (fabvdb hollow)                                                  */
 /* ------------------------------------------------------------------------- */
+/* Parameters of hollowing. Fill with fabvdb_hollow_options_init(). (since 0.1) */
+typedef struct fabvdb_hollow_options {
+    size_t struct_size;       /* sizeof(fabvdb_hollow_options), set by _init */
+    double wall;              /* wall thickness, mm, > 0. Default 3 (PrusaSlicer's minimum thickness). */
+    double closing;           /* closing distance, mm, >= 0: the cavity is offset by -(wall + closing)
+                                 then by +closing, which rounds it and drops passages narrower than
+                                 2*closing (PrusaSlicer's meaning). Default 0: the exact offset. */
+    double voxel_size;        /* mm; 0 (default): automatic, wall / 4 (or from resolution) */
+    int resolution;           /* > 0 and voxel_size 0: voxel = longest bounding-box side / resolution.
+                                 Default 0. */
+    double adaptivity;        /* [0, 1] simplification of the cavity surface; default 0 */
+    double min_cavity_volume; /* mm^3: voids smaller than this are filled; default 0 */
+} fabvdb_hollow_options;
+
+/* Fills *options with the defaults above and sets struct_size. NULL does
+ * nothing. Thread-safe. (since 0.1) */
+FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
+
+/* Hollows a solid for printing: keeps a wall of options->wall under the outer
+ * surface and empties the rest. The mesh may be dirty (holes, self-
+ * intersections, flipped or duplicated triangles, several shells): it then
+ * goes through the robust signed distance first. A clean closed mesh keeps its
+ * own outer triangles exactly. The cavity vertices lie at exactly the wall
+ * distance from the outer surface (closing 0) or at least at it (closing > 0).
+ * Regions thinner than 2*wall stay solid.
+ * mesh: borrowed. opts: NULL for the defaults.
+ * out_mesh: receives the hollowed mesh (owned by the caller): outer shells
+ *   facing out, cavity shells facing in, every shell closed, no cavity
+ *   triangle touching the outer surface (checked exactly).
+ * out_report: NULL, or receives a report (owned by the caller) with
+ *   voxel_size, wall, closing, outer_surface ("input" or "repaired"),
+ *   volume_solid, volume_shell, material_saved_fraction, cavity_count,
+ *   cavities [{volume}], filled_cavities [{volume}], min_wall_at_vertices,
+ *   output_vertices, output_triangles, timings {stage: seconds, total}.
+ * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle, wall <= 0,
+ * closing < 0, voxel larger than the wall, adaptivity outside [0, 1], a wall
+ * that leaves no cavity because the part is nowhere thicker than 2*wall);
+ * FABVDB_ERR_BAD_INPUT (a mesh that encloses no volume); FABVDB_ERR_OUT_OF_BUDGET
+ * (the voxel size needs more memory than the context's budget; the message
+ * names a voxel size that fits); FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY.
+ * Out-parameters are untouched on failure. Reports progress. A context is
+ * used by one thread at a time. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_mesh_hollow(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                            const fabvdb_hollow_options* opts, fabvdb_mesh** out_mesh,
+                                            fabvdb_report** out_report);
+
+/* As fabvdb_mesh_hollow, but returns the shell as a level set (signed
+ * distance at the voxel size used, negative in the material) in *out_shell
+ * (owned by the caller). Same statuses, progress and thread safety. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_mesh_hollow_volume(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                                   const fabvdb_hollow_options* opts, fabvdb_volume** out_shell,
+                                                   fabvdb_report** out_report);
+
+/* Hollows a solid given as a level set: its zero iso-surface is the outer
+ * surface; the shell comes back as a level set at the solid's voxel size
+ * (options->voxel_size and resolution are ignored). Same report, statuses,
+ * progress and thread safety as fabvdb_mesh_hollow. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_volume_hollow(fabvdb_ctx* ctx, const fabvdb_volume* solid,
+                                              const fabvdb_hollow_options* opts, fabvdb_volume** out_shell,
+                                              fabvdb_report** out_report);
 
 /* ------------------------------------------------------------------------- */
 /* Drainability and drain holes (fabvdb drain, fabvdb powder-sim)             */

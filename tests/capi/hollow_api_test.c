@@ -1,0 +1,96 @@
+/* hollow_api_test.c — the hollowing C API from C alone: defaults, a hollowed
+ * 40 mm cube (volumes checked by the divergence theorem here, not by the
+ * library), the report, the shell level set, bad arguments and cancellation
+ * leaving the out-parameters untouched. */
+#include <math.h>
+#include <stdint.h>
+
+#include "check.h"
+#include "fabvdb.h"
+
+static const double cube_vertices[] = {0, 0, 0, 40, 0, 0, 0, 40, 0, 40, 40, 0, 0, 0, 40, 40, 0, 40, 0, 40, 40, 40, 40, 40};
+static const uint32_t cube_triangles[] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                                          2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+
+static double signed_volume(const fabvdb_mesh* mesh) {
+    const double* v = fabvdb_mesh_vertices(mesh);
+    const uint32_t* t = fabvdb_mesh_triangles(mesh);
+    double volume = 0;
+    for (size_t i = 0; i < fabvdb_mesh_triangle_count(mesh); ++i) {
+        const double* a = v + 3 * t[3 * i];
+        const double* b = v + 3 * t[3 * i + 1];
+        const double* c = v + 3 * t[3 * i + 2];
+        volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                  a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+    return volume / 6.0;
+}
+
+static int cancel_on_second_stage(void* user, const char* stage, double fraction) {
+    int* calls = (int*)user;
+    (void)stage;
+    (void)fraction;
+    return ++*calls >= 2;
+}
+
+int main(void) {
+    fabvdb_ctx* ctx = NULL;
+    CHECK(fabvdb_ctx_new(&ctx) == FABVDB_OK);
+    fabvdb_mesh* cube = NULL;
+    CHECK(fabvdb_mesh_new(ctx, cube_vertices, 8, cube_triangles, 12, &cube) == FABVDB_OK);
+
+    fabvdb_hollow_options options;
+    fabvdb_hollow_options_init(&options);
+    CHECK(options.struct_size == sizeof(options));
+    CHECK(options.wall == 3.0 && options.closing == 0.0 && options.voxel_size == 0.0);
+
+    fabvdb_mesh* hollowed = NULL;
+    fabvdb_report* report = NULL;
+    options.voxel_size = 1.0;
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, &report) == FABVDB_OK);
+    CHECK(hollowed != NULL && report != NULL);
+    /* 40^3 - 34^3: the cavity of a box is the box offset by the wall. */
+    const double shell = signed_volume(hollowed);
+    CHECK(fabs(shell - (64000.0 - 39304.0)) < 0.02 * 39304.0);
+    double number = 0;
+    CHECK(fabvdb_report_number(ctx, report, "/volume_shell", &number) == FABVDB_OK && fabs(number - shell) < 1e-6 * shell);
+    CHECK(fabvdb_report_number(ctx, report, "/cavity_count", &number) == FABVDB_OK && number == 1);
+    CHECK(fabvdb_report_number(ctx, report, "/material_saved_fraction", &number) == FABVDB_OK && number > 0.5);
+    CHECK(fabvdb_report_number(ctx, report, "/output_triangles", &number) == FABVDB_OK &&
+          number == (double)fabvdb_mesh_triangle_count(hollowed));
+    fabvdb_report_free(report);
+    fabvdb_mesh_free(hollowed);
+
+    fabvdb_volume* shell_volume = NULL;
+    CHECK(fabvdb_mesh_hollow_volume(ctx, cube, &options, &shell_volume, NULL) == FABVDB_OK);
+    CHECK(shell_volume != NULL);
+    fabvdb_volume* again = NULL;
+    CHECK(fabvdb_volume_hollow(ctx, shell_volume, NULL, &again, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    CHECK(again == NULL);
+    fabvdb_volume_free(shell_volume);
+
+    /* Bad arguments leave the out-parameters untouched. */
+    hollowed = NULL;
+    CHECK(fabvdb_mesh_hollow(ctx, NULL, &options, &hollowed, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    options.wall = 0;
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    options.wall = 25;
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    options.wall = 3;
+    options.voxel_size = 0.001;
+    CHECK(fabvdb_ctx_set_memory_budget(ctx, 64u << 20) == FABVDB_OK);
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, NULL) == FABVDB_ERR_OUT_OF_BUDGET);
+    CHECK(fabvdb_ctx_set_memory_budget(ctx, 0) == FABVDB_OK);
+    CHECK(hollowed == NULL);
+
+    int calls = 0;
+    options.voxel_size = 1.0;
+    CHECK(fabvdb_ctx_set_progress(ctx, cancel_on_second_stage, &calls) == FABVDB_OK);
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, &report) == FABVDB_ERR_CANCELLED);
+    CHECK(hollowed == NULL);
+    CHECK(fabvdb_ctx_set_progress(ctx, NULL, NULL) == FABVDB_OK);
+
+    fabvdb_mesh_free(cube);
+    fabvdb_ctx_free(ctx);
+    return check_summary();
+}
