@@ -8,6 +8,7 @@
 
 static const cli_command* const commands[] = {
     &cmd_info,
+    &cmd_hollow,
     &cmd_decompose,
     &cmd_batch,
     &cmd_drain,

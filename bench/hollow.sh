@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# bench/hollow.sh BUILD_DIR [MODEL...] — fabvdb hollow against PrusaSlicer's
+# SLA hollowing, in the same run, on the shared models scaled to 60 and
+# 100 mm, wall 3 mm, closing 2 mm. PrusaSlicer's hollowing time is the span
+# between its "Hollowing model" and "Drilling holes" log lines, its memory the
+# peak it logs at "Drilling holes"; fabvdb's time is the hollowing operation
+# (report timings.total) and its memory the peak RSS of the whole command.
+# Quality (measured by bench_hollow_quality, independently of the hollowing):
+# the thinnest wall at closing 2 mm and at closing 0, the median wall at
+# closing 0, and the largest distance of the output's outer surface to the
+# input. Installs Debian's prusa-slicer if it is missing.
+set -euo pipefail
+BUILD="${1:?usage: bench/hollow.sh BUILD_DIR [MODEL...]}"
+shift
+SOURCE="$(cd "$(dirname "$0")/.." && pwd)"
+MESHES="$SOURCE/../shared/data/meshes"
+FABVDB="$BUILD/fabvdb"
+QUALITY="$BUILD/bench/bench_hollow_quality"
+[ -x "$QUALITY" ] || QUALITY="$BUILD/bench_hollow_quality"
+MODELS=("$@")
+[ ${#MODELS[@]} -gt 0 ] || MODELS=(bunny.off spot.obj fertility.off kitten.obj max-planck_decimated.obj
+  dragon_20k.obj rocker-arm.obj armadillo_86k.obj)
+WORK="$(mktemp -d)"
+trap 'rm -rf "$WORK"' EXIT
+
+if ! command -v prusa-slicer >/dev/null; then
+  apt-get install -y prusa-slicer >/dev/null
+fi
+
+seconds_of() {  # the time of day of a PrusaSlicer log line, in seconds
+  sed -n 's/^\[[0-9-]* \([0-9]*\):\([0-9]*\):\([0-9.]*\)\].*/\1 \2 \3/p' | awk '{ print $1 * 3600 + $2 * 60 + $3 }'
+}
+
+json_number() {  # json_number FILE KEY: the first number after "KEY":
+  sed -n "s/.*\"$2\": *\(-\{0,1\}[0-9.eE+-]*\).*/\1/p" "$1" | head -n 1
+}
+
+printf '%-26s %4s | %8s %8s %6s | %7s %7s %5s | %8s %8s %8s %9s\n' model mm ps_s fab_s ratio ps_MB fab_MB mem \
+  wmin_c2 wmin_c0 wmed_c0 outer_dev
+for model in "${MODELS[@]}"; do
+  for size in 60 100; do
+    log="$WORK/prusa.log"
+    prusa-slicer --export-sla --printer-technology SLA --hollowing-enable --no-supports-enable --no-pad-enable \
+      --loglevel 4 --display-width 200 --display-height 200 --display-pixels-x 1440 --display-pixels-y 1440 \
+      --bed-shape 0x0,200x0,200x200,0x200 --center 100,100 --max-print-height 200 \
+      --hollowing-min-thickness 3 --hollowing-closing-distance 2 --scale-to-fit "$size,$size,$size" \
+      --datadir "$WORK/prusa-data" -o "$WORK/out.sl1" "$MESHES/$model" >"$log" 2>&1 || true
+    start="$(grep -m1 'Hollowing model' "$log" | seconds_of || true)"
+    end="$(grep -m1 'Drilling holes' "$log" | seconds_of || true)"
+    if [ -z "$start" ] || [ -z "$end" ]; then
+      echo "$model $size: PrusaSlicer did not hollow (see its log below)" >&2
+      tail -n 3 "$log" >&2
+      continue
+    fi
+    prusa_seconds="$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }')"
+    prusa_mb="$(grep -m1 'Drilling holes' "$log" | sed -n 's/.*Peak memory usage: \([0-9]*\)MB.*/\1/p')"
+
+    /usr/bin/time -f '%M' -o "$WORK/rss" "$FABVDB" hollow "$MESHES/$model" --fit "${size}mm" -o "$WORK/c2.stl" \
+      --wall 3mm --closing 2mm --report "$WORK/c2.json" -q
+    fab_seconds="$(sed -n '/"timings"/,/}/p' "$WORK/c2.json" | json_number /dev/stdin total)"
+    fab_mb="$(awk '{ printf "%.0f", $1 / 1024 }' "$WORK/rss")"
+    "$FABVDB" hollow "$MESHES/$model" --fit "${size}mm" -o "$WORK/c0.stl" --wall 3mm --closing 0mm -q
+    read -r wmin2 _ _ _ < <("$QUALITY" "$MESHES/$model" "$size" "$WORK/c2.stl")
+    read -r wmin0 wmed0 dev _ < <("$QUALITY" "$MESHES/$model" "$size" "$WORK/c0.stl")
+    printf '%-26s %4s | %8s %8.3f %6.1f | %7s %7s %5.2f | %8s %8s %8s %9s\n' "$model" "$size" "$prusa_seconds" \
+      "$fab_seconds" "$(awk -v a="$prusa_seconds" -v b="$fab_seconds" 'BEGIN { print a / b }')" "$prusa_mb" "$fab_mb" \
+      "$(awk -v a="$fab_mb" -v b="$prusa_mb" 'BEGIN { print a / b }')" "$wmin2" "$wmin0" "$wmed0" "$dev"
+  done
+done
+echo "ratio = PrusaSlicer time / fabvdb time (target >= 10); mem = fabvdb peak / PrusaSlicer peak (target <= 1)"
+echo "targets: wmin >= 2.78 mm, wmed_c0 within 0.1 mm of 3, outer_dev <= 0.05 mm"

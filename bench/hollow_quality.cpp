@@ -1,0 +1,104 @@
+// bench_hollow_quality INPUT FIT_MM HOLLOWED: the quality figures of a
+// hollowed mesh, measured independently of the hollowing code. The output's
+// components are split by the sign of their volume (outer shells positive,
+// cavity shells negative); the wall is the CGAL AABB distance from samples of
+// every cavity triangle (corners, edge midpoints, centroid) to the outer
+// triangles; the outer deviation is the distance from the output's outer
+// vertices to the input scaled like `fabvdb --fit FIT_MM`. Prints one line:
+// wall_min wall_median outer_deviation_max outer_deviation_mean (mm).
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+
+#include "core/error.h"
+#include "io/mesh_io.h"
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Triangle3 = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Point point(const fabvdb::Vec3& p) { return Point(p[0], p[1], p[2]); }
+
+Triangle3 triangle(const fabvdb::Mesh& mesh, const fabvdb::Triangle& t) {
+    return Triangle3(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]), point(mesh.vertices[t[2]]));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: bench_hollow_quality INPUT FIT_MM HOLLOWED\n");
+        return 1;
+    }
+    try {
+        fabvdb::Progress progress;
+        fabvdb::Mesh input = fabvdb::io::read_mesh(argv[1], progress);
+        const fabvdb::Mesh output = fabvdb::io::read_mesh(argv[3], progress);
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+        for (const auto& p : input.vertices)
+            for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+        const double scale = std::atof(argv[2]) / std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+        for (auto& p : input.vertices)
+            for (double& x : p) x *= scale;
+
+        // Components by union-find over shared vertices, signed volume each.
+        std::vector<uint32_t> parent(output.vertices.size());
+        std::iota(parent.begin(), parent.end(), 0u);
+        const auto find = [&](uint32_t v) {
+            while (parent[v] != v) v = parent[v] = parent[parent[v]];
+            return v;
+        };
+        for (const auto& t : output.triangles) parent[find(t[0])] = find(t[1]), parent[find(t[1])] = find(t[2]);
+        std::vector<double> volume(output.vertices.size(), 0.0);
+        for (const auto& t : output.triangles) {
+            const Triangle3 tri = triangle(output, t);
+            volume[find(t[0])] += CGAL::volume(Point(0, 0, 0), tri[0], tri[1], tri[2]);
+        }
+        std::vector<Triangle3> outer, cavity;
+        std::vector<uint32_t> outer_vertices;
+        for (const auto& t : output.triangles) {
+            const bool is_outer = volume[find(t[0])] > 0;
+            (is_outer ? outer : cavity).push_back(triangle(output, t));
+            if (is_outer) outer_vertices.insert(outer_vertices.end(), t.begin(), t.end());
+        }
+        Tree outer_tree(outer.begin(), outer.end());
+        outer_tree.accelerate_distance_queries();
+        std::vector<double> wall;
+        for (const Triangle3& t : cavity) {
+            const Point samples[] = {t[0], t[1], t[2], CGAL::midpoint(t[0], t[1]), CGAL::midpoint(t[1], t[2]),
+                                     CGAL::midpoint(t[2], t[0]), CGAL::centroid(t[0], t[1], t[2])};
+            for (const Point& p : samples) wall.push_back(std::sqrt(outer_tree.squared_distance(p)));
+        }
+        std::sort(wall.begin(), wall.end());
+
+        std::vector<Triangle3> input_triangles;
+        for (const auto& t : input.triangles) input_triangles.push_back(triangle(input, t));
+        Tree input_tree(input_triangles.begin(), input_triangles.end());
+        input_tree.accelerate_distance_queries();
+        std::sort(outer_vertices.begin(), outer_vertices.end());
+        outer_vertices.erase(std::unique(outer_vertices.begin(), outer_vertices.end()), outer_vertices.end());
+        double deviation_max = 0, deviation_sum = 0;
+        for (uint32_t v : outer_vertices) {
+            const double d = std::sqrt(input_tree.squared_distance(point(output.vertices[v])));
+            deviation_max = std::max(deviation_max, d);
+            deviation_sum += d;
+        }
+        std::printf("%.4f %.4f %.5f %.5f\n", wall.empty() ? 0.0 : wall.front(), wall.empty() ? 0.0 : wall[wall.size() / 2],
+                    deviation_max, outer_vertices.empty() ? 0.0 : deviation_sum / double(outer_vertices.size()));
+    } catch (const fabvdb::Error& e) {
+        std::fprintf(stderr, "bench_hollow_quality: %s\n", e.what());
+        return 2;
+    }
+    return 0;
+}
