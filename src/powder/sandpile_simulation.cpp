@@ -18,10 +18,12 @@ enum Cell : uint8_t { kFree = 0, kSolid = 1, kOutside = 2, kGrain = 3 };
 struct Drill {
     Eigen::Vector3d center, axis;
     double radius, depth;
-    bool contains(const Eigen::Vector3d& p) const {
+    //! Within the drill widened by `margin` sideways.
+    bool contains(const Eigen::Vector3d& p, double margin = 0.0) const {
         const Eigen::Vector3d v = p - center;
         const double t = v.dot(axis);
-        return t >= -radius && t <= depth && (v - t * axis).squaredNorm() <= radius * radius;
+        const double r = radius + margin;
+        return t >= -radius && t <= depth && (v - t * axis).squaredNorm() <= r * r;
     }
 };
 
@@ -67,11 +69,16 @@ public:
                 for (int z = 0; z < n_[2]; ++z) {
                     const Eigen::Vector3d p = world(x, y, z);
                     const openvdb::Coord ijk = openvdb::Coord::round(solid.worldToIndex(openvdb::Vec3d(p.x(), p.y(), p.z())));
-                    bool drilled = false;
-                    for (const Drill& drill : drills) drilled = drilled || drill.contains(p);
+                    // The plug is a little wider than the drill, so an already
+                    // drilled part's tunnel, voxelised again, is plugged whole.
+                    bool drilled = false, plugged = false;
+                    for (const Drill& drill : drills) {
+                        drilled = drilled || drill.contains(p);
+                        plugged = plugged || drill.contains(p, 2.0 * h);
+                    }
                     const size_t i = index(x, y, z);
                     if (accessor.getValue(ijk) < 0.0f && !drilled) cells_[i] = kSolid;
-                    barrier[i] = cells_[i] == kSolid || drilled;
+                    barrier[i] = cells_[i] == kSolid || plugged;
                 }
         });
         // The outside: what the border reaches with the holes plugged.
