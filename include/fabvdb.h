@@ -202,6 +202,86 @@ FABVDB_API void fabvdb_volume_free(fabvdb_volume* volume);
 /* Repair: robust level sets from dirty meshes (issue: fabvdb repair)         */
 /* ------------------------------------------------------------------------- */
 
+/* A mesh becomes a volume (a narrow-band signed distance field) whatever its
+ * defects: holes, self-intersections, flipped or inconsistent normals,
+ * duplicated triangles, unwelded soups, overlapping or nested shells. Inside is
+ * where the generalized winding number of the consistently oriented input is
+ * at least 1/2: holes close along that surface, inverted shells count as
+ * solids, overlapping shells unite. Extracting the volume again gives a
+ * closed, 2-manifold, outward-oriented mesh free of self-intersections. */
+
+/* fabvdb_volume_options.flags */
+#define FABVDB_REPAIR_NO_SNAP 0x1u /* keep extracted vertices where the voxels put them */
+
+typedef struct fabvdb_volume_options {
+    size_t struct_size;      /* sizeof(fabvdb_volume_options), set by _init() */
+    double voxel_size;       /* voxel edge in mm; 0 (default): from resolution */
+    int resolution;          /* voxels along the longest bounding-box side when
+                                voxel_size is 0; default 400 (0.25 mm on a
+                                100 mm part) */
+    int half_band_voxels;    /* narrow band on each side, in voxels; default 3 (>= 2) */
+    double adaptivity;       /* extraction adaptivity in [0, 1]; default 0 (uniform) */
+    double min_shell_volume; /* shells under this volume (mm^3) are dropped; default 0 (keep all) */
+    double thicken;          /* > 0: an input enclosing no volume (an open sheet)
+                                becomes a solid sheet this thick (mm); default 0 */
+    uint32_t flags;          /* FABVDB_REPAIR_* bits; default 0 */
+} fabvdb_volume_options;
+
+/* Fills *options with the defaults above. NULL does nothing. (since 0.1) */
+FABVDB_API void fabvdb_volume_options_init(fabvdb_volume_options* options);
+
+/* Makes the robust signed distance field of a mesh (voxel_size or resolution,
+ * half_band_voxels, min_shell_volume, thicken are used).
+ * options: NULL for the defaults. out: receives the volume, owned by the caller
+ * (fabvdb_volume_free). report: NULL, or receives a report owned by the caller
+ * with voxel_size, active_voxels, estimated_bytes, rebuilt (the band was
+ * rebuilt from the winding-number surface), thickened, volume (mm^3),
+ * shells_kept, shells_dropped, timings {stage: seconds}.
+ * Before allocating, the memory is estimated; over the context's budget the
+ * call fails with FABVDB_ERR_OUT_OF_BUDGET and a message proposing a voxel size
+ * that fits. Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT,
+ * FABVDB_ERR_BAD_INPUT (no triangle with area, encloses no volume and no
+ * thickness given, every shell dropped), FABVDB_ERR_OUT_OF_BUDGET,
+ * FABVDB_ERR_OUT_OF_MEMORY, FABVDB_ERR_CANCELLED. Reports progress.
+ * One thread per context at a time; uses the context's worker threads. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                                 const fabvdb_volume_options* options, fabvdb_volume** out,
+                                                 fabvdb_report** report);
+
+/* Extracts the zero surface of a volume as a triangle mesh (options: NULL or
+ * its adaptivity is used): closed, 2-manifold, outward-oriented, vertices
+ * shared. out: receives the mesh, owned by the caller. Returns FABVDB_OK,
+ * FABVDB_ERR_INVALID_ARGUMENT, FABVDB_ERR_OUT_OF_MEMORY, FABVDB_ERR_CANCELLED.
+ * Reports progress. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_volume_to_mesh(fabvdb_ctx* ctx, const fabvdb_volume* volume,
+                                               const fabvdb_volume_options* options, fabvdb_mesh** out);
+
+/* Repairs a mesh in one call: fabvdb_volume_from_mesh, then the extraction,
+ * then (unless FABVDB_REPAIR_NO_SNAP) output vertices within a voxel of a clean
+ * part of the input are moved onto it, never creating a flipped triangle or
+ * a self-intersection. out: receives the repaired mesh, owned by the caller.
+ * report: NULL, or receives a report owned by the caller with the keys of
+ * fabvdb_volume_from_mesh plus input (the fabvdb_mesh_inspect report of the
+ * input), output_triangles, snapped_vertices; volume is the output mesh's.
+ * Returns the statuses of fabvdb_volume_from_mesh. Reports progress. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                            const fabvdb_volume_options* options, fabvdb_mesh** out,
+                                            fabvdb_report** report);
+
+/* Reads the first float level set of an OpenVDB file (.vdb). out: receives the
+ * volume, owned by the caller. Returns FABVDB_OK, FABVDB_ERR_IO (missing,
+ * unreadable), FABVDB_ERR_BAD_INPUT (not a VDB file, or no float level set in
+ * it), FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_volume_read(fabvdb_ctx* ctx, const char* path, fabvdb_volume** out);
+
+/* Writes a volume as an OpenVDB file (.vdb), to a temporary file renamed into
+ * place, so a failure leaves no partial file. Returns FABVDB_OK, FABVDB_ERR_IO,
+ * FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_volume_write(fabvdb_ctx* ctx, const fabvdb_volume* volume, const char* path);
+
+/* The voxel edge length of a volume in mm; 0 for NULL. Thread-safe. (since 0.1) */
+FABVDB_API double fabvdb_volume_voxel_size(const fabvdb_volume* volume);
+
 /* ------------------------------------------------------------------------- */
 /* Hollowing (fabvdb hollow)                                                  */
 /* ------------------------------------------------------------------------- */

@@ -10,6 +10,7 @@ static const cli_command* const commands[] = {
     &cmd_info,
     &cmd_hollow,
     &cmd_decompose,
+    &cmd_repair,
     &cmd_batch,
     &cmd_drain,
     &cmd_powder_sim,

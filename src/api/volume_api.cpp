@@ -1,9 +1,192 @@
-//! C API: volume handles (level sets).
+//! C API: volume handles (level sets) — robust conversion from meshes
+//! (`fabvdb repair`), extraction, .vdb files.
+#include <cmath>
+#include <fstream>
+
+#include <openvdb/io/File.h>
+#include <openvdb/tools/LevelSetMeasure.h>
+
 #include "api/guard.h"
 #include "api/volume_handle.h"
+#include "core/atomic_output.h"
+#include "surface/inspect.h"
+#include "volume/extract_mesh.h"
+#include "volume/repair.h"
+
+namespace {
+
+const fabvdb_volume_options& options_or_defaults(const fabvdb_volume_options* options,
+                                                 fabvdb_volume_options& defaults) {
+    fabvdb_volume_options_init(&defaults);
+    if (!options) return defaults;
+    if (options->struct_size < sizeof(fabvdb_volume_options))
+        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "options: struct_size is not set (call fabvdb_volume_options_init)");
+    return *options;
+}
+
+fabvdb::volume::RepairOptions repair_options(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
+                                             const fabvdb_volume_options& options) {
+    if (options.voxel_size < 0.0 || !std::isfinite(options.voxel_size))
+        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "voxel_size must be >= 0");
+    if (!(options.adaptivity >= 0.0 && options.adaptivity <= 1.0))
+        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "adaptivity must be in [0, 1]");
+    if (!(options.min_shell_volume >= 0.0))
+        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "min_shell_volume must be >= 0");
+    if (!(options.thicken >= 0.0)) throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "thicken must be >= 0");
+    fabvdb::volume::RepairOptions repair;
+    repair.distance.voxel_size = options.voxel_size > 0.0
+                                     ? options.voxel_size
+                                     : fabvdb::volume::voxel_size_for_resolution(mesh, options.resolution, "mesh");
+    repair.distance.half_band_voxels = options.half_band_voxels;
+    repair.distance.memory_budget_bytes = ctx->budget_bytes();
+    repair.distance.thicken = options.thicken;
+    repair.adaptivity = options.adaptivity;
+    repair.min_shell_volume = options.min_shell_volume;
+    repair.snap = !(options.flags & FABVDB_REPAIR_NO_SNAP);
+    return repair;
+}
+
+double signed_volume(const fabvdb::Mesh& mesh) {
+    double six_volume = 0.0;
+    for (const fabvdb::Triangle& t : mesh.triangles) {
+        const auto &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        six_volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                      a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+    return six_volume / 6.0;
+}
+
+nlohmann::json repair_report(const fabvdb::volume::RepairResult& result) {
+    nlohmann::json report;
+    report["voxel_size"] = result.grid->voxelSize()[0];
+    report["active_voxels"] = result.distance.active_voxels;
+    report["estimated_bytes"] = result.distance.estimated_bytes;
+    report["rebuilt"] = result.distance.rebuilt;
+    report["thickened"] = result.distance.thickened;
+    report["shells_kept"] = result.shells_kept;
+    report["shells_dropped"] = result.shells_dropped;
+    report["timings"] = result.distance.timings;
+    return report;
+}
+
+}  // namespace
 
 extern "C" {
 
 void fabvdb_volume_free(fabvdb_volume* volume) { delete volume; }
+
+void fabvdb_volume_options_init(fabvdb_volume_options* options) {
+    if (!options) return;
+    *options = fabvdb_volume_options{};
+    options->struct_size = sizeof(fabvdb_volume_options);
+    options->voxel_size = 0.0;
+    options->resolution = 400;
+    options->half_band_voxels = 3;
+    options->adaptivity = 0.0;
+    options->min_shell_volume = 0.0;
+    options->thicken = 0.0;
+    options->flags = 0;
+}
+
+fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_volume_options* options,
+                                      fabvdb_volume** out, fabvdb_report** report) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(mesh, "mesh");
+        fabvdb::api::require(out, "out");
+        fabvdb_volume_options defaults;
+        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, options_or_defaults(options, defaults));
+        repair.extract = false;
+        fabvdb::Progress progress = ctx->make_progress();
+        fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
+        nlohmann::json document = repair_report(result);
+        document["volume"] = openvdb::tools::levelSetVolume(*result.grid);
+        auto volume = std::make_unique<fabvdb_volume>();
+        volume->grid = result.grid;
+        if (report) *report = fabvdb::api::new_report_handle(std::move(document));
+        *out = volume.release();
+    });
+}
+
+fabvdb_status fabvdb_volume_to_mesh(fabvdb_ctx* ctx, const fabvdb_volume* volume, const fabvdb_volume_options* options,
+                                    fabvdb_mesh** out) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(volume, "volume");
+        fabvdb::api::require(out, "out");
+        fabvdb_volume_options defaults;
+        const fabvdb_volume_options& chosen = options_or_defaults(options, defaults);
+        fabvdb::Progress progress = ctx->make_progress();
+        *out = fabvdb::api::new_mesh_handle(fabvdb::volume::extract_mesh(*volume->grid, chosen.adaptivity, progress));
+    });
+}
+
+fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_volume_options* options,
+                                 fabvdb_mesh** out, fabvdb_report** report) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(mesh, "mesh");
+        fabvdb::api::require(out, "out");
+        fabvdb_volume_options defaults;
+        const fabvdb::volume::RepairOptions repair =
+            repair_options(ctx, mesh->mesh, options_or_defaults(options, defaults));
+        fabvdb::Progress progress = ctx->make_progress();
+        nlohmann::json input;
+        if (report) input = fabvdb::surface::inspect_mesh(mesh->mesh, progress);
+        fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
+        nlohmann::json document = repair_report(result);
+        document["input"] = std::move(input);
+        document["output_triangles"] = result.mesh.triangles.size();
+        document["snapped_vertices"] = result.snapped_vertices;
+        document["volume"] = signed_volume(result.mesh);
+        if (report) *report = fabvdb::api::new_report_handle(std::move(document));
+        *out = fabvdb::api::new_mesh_handle(std::move(result.mesh));
+    });
+}
+
+fabvdb_status fabvdb_volume_read(fabvdb_ctx* ctx, const char* path, fabvdb_volume** out) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(path, "path");
+        fabvdb::api::require(out, "out");
+        openvdb::initialize();
+        if (!std::ifstream(path)) throw fabvdb::Error(FABVDB_ERR_IO, std::string(path) + ": cannot be opened");
+        openvdb::GridPtrVecPtr grids;
+        try {
+            openvdb::io::File file(path);
+            file.open(false);
+            grids = file.getGrids();
+            file.close();
+        } catch (const openvdb::Exception& e) {
+            throw fabvdb::Error(FABVDB_ERR_BAD_INPUT, std::string(path) + ": not a readable VDB file (" + e.what() + ")");
+        }
+        for (const openvdb::GridBase::Ptr& grid : *grids) {
+            auto level_set = openvdb::gridPtrCast<openvdb::FloatGrid>(grid);
+            if (level_set && level_set->getGridClass() == openvdb::GRID_LEVEL_SET) {
+                auto volume = std::make_unique<fabvdb_volume>();
+                volume->grid = level_set;
+                *out = volume.release();
+                return;
+            }
+        }
+        throw fabvdb::Error(FABVDB_ERR_BAD_INPUT, std::string(path) + ": holds no float level set grid");
+    });
+}
+
+fabvdb_status fabvdb_volume_write(fabvdb_ctx* ctx, const fabvdb_volume* volume, const char* path) {
+    return fabvdb::api::guard(ctx, [&] {
+        fabvdb::api::require(volume, "volume");
+        fabvdb::api::require(path, "path");
+        fabvdb::AtomicOutput output(path);
+        try {
+            openvdb::io::File file(output.temp_path());
+            file.write({volume->grid});
+            file.close();
+        } catch (const openvdb::Exception& e) {
+            throw fabvdb::Error(FABVDB_ERR_IO, std::string(path) + ": cannot be written (" + e.what() + ")");
+        }
+        output.commit();
+    });
+}
+
+double fabvdb_volume_voxel_size(const fabvdb_volume* volume) {
+    return volume && volume->grid ? volume->grid->voxelSize()[0] : 0.0;
+}
 
 }  // extern "C"

@@ -1,0 +1,42 @@
+# repair_test.sh — `fabvdb repair`: outputs checked by `fabvdb info` (closed,
+# no boundary, no self-intersection), the level set written as .vdb, reports
+# with their keys, failures with the documented exit code and no output file.
+source "$(dirname "$0")/lib.sh"
+
+# A box with an open side becomes a closed solid.
+expect_exit 0 "$FABVDB" repair "$MESHES/cube_no_bottom.obj" -o "$WORK/cube.stl" --resolution 48 \
+  --report "$WORK/cube.json" --quiet
+for key in voxel_size active_voxels input output_triangles volume shells_kept shells_dropped timings; do
+  expect_match "$(cat "$WORK/cube.json")" "\"$key\""
+done
+expect_exit 0 "$FABVDB" info "$WORK/cube.stl" --report "$WORK/info.json"
+expect_match "$(cat "$WORK/info.json")" '"closed": true'
+expect_match "$(cat "$WORK/info.json")" '"boundary_edges": 0'
+expect_match "$(cat "$WORK/info.json")" '"self_intersecting_pairs": 0'
+
+# The level set itself.
+expect_exit 0 "$FABVDB" repair "$MESHES/teapot.obj" -o "$WORK/teapot.vdb" --voxel 2% --quiet
+[ -s "$WORK/teapot.vdb" ] && passed=$((passed + 1)) || fail "no VDB written"
+
+# An open sheet encloses nothing: bad input, a reason, no output; --thicken makes it a solid.
+printf 'v 0 0 0\nv 10 0 0\nv 10 10 0\nv 0 10 0\nf 1 2 3 4\n' >"$WORK/sheet.obj"
+expect_exit 2 "$FABVDB" repair "$WORK/sheet.obj" -o "$WORK/sheet.stl" --voxel 0.5mm
+expect_match "$STDERR" "encloses no volume"
+expect_no_file "$WORK/sheet.stl"
+expect_exit 0 "$FABVDB" repair "$WORK/sheet.obj" -o "$WORK/thick.stl" --voxel 0.25mm --thicken 1mm --quiet
+expect_exit 0 "$FABVDB" info "$WORK/thick.stl" --report "$WORK/thick.json"
+expect_match "$(cat "$WORK/thick.json")" '"closed": true'
+
+# Over the memory budget: exit 3, a voxel size that fits is proposed, no output.
+expect_exit 3 "$FABVDB" repair "$MESHES/bunny.off" -o "$WORK/big.stl" --voxel 0.00001mm --max-memory 64M
+expect_match "$STDERR" "--voxel"
+expect_no_file "$WORK/big.stl"
+
+# Usage errors exit 1, a missing input 2; never an output.
+expect_exit 1 "$FABVDB" repair "$MESHES/bunny.off"
+expect_exit 1 "$FABVDB" repair "$MESHES/bunny.off" -o "$WORK/x.stl" --adaptivity 2
+expect_no_file "$WORK/x.stl"
+expect_exit 2 "$FABVDB" repair "$WORK/missing.obj" -o "$WORK/missing.stl"
+expect_no_file "$WORK/missing.stl"
+
+finish
