@@ -2,7 +2,6 @@
 #include "powder/baseline_holes.h"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 namespace fabvdb::powder {
@@ -22,12 +21,7 @@ std::vector<DrainHole> baseline_holes(const std::vector<DrainHole>& candidates, 
         const DrainHole& candidate = candidates[index];
         if (candidate.cavity >= per_cavity.size() || taken[candidate.cavity] >= per_cavity[candidate.cavity])
             continue;
-        const bool spaced = std::all_of(holes.begin(), holes.end(), [&](const DrainHole& hole) {
-            const double dx = hole.center[0] - candidate.center[0], dy = hole.center[1] - candidate.center[1],
-                         dz = hole.center[2] - candidate.center[2];
-            return std::sqrt(dx * dx + dy * dy + dz * dz) >= min_center_distance;
-        });
-        if (!spaced) continue;
+        if (!spaced_from(candidate, holes, min_center_distance)) continue;
         holes.push_back(candidate);
         ++taken[candidate.cavity];
     }

@@ -99,6 +99,15 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     chain_ = std::move(chain);
 }
 
+bool spaced_from(const DrainHole& candidate, const std::vector<DrainHole>& holes, double min_center_distance) {
+    for (const DrainHole& hole : holes) {
+        const Vec3 v{candidate.center[0] - hole.center[0], candidate.center[1] - hole.center[1],
+                     candidate.center[2] - hole.center[2]};
+        if (std::sqrt(dot(v, v)) < min_center_distance) return false;
+    }
+    return true;
+}
+
 bool DrainabilityModel::absorbing(const DrainHole& hole, const Vec3& gravity) const {
     return dot(hole.axis, gravity) > sin_repose_;
 }

@@ -38,6 +38,9 @@ struct DrainHole {
     uint32_t cavity = 0;
 };
 
+//! Whether `candidate`'s centre is at least `min_center_distance` from every hole's.
+bool spaced_from(const DrainHole& candidate, const std::vector<DrainHole>& holes, double min_center_distance);
+
 struct DrainabilityOptions {
     double repose_radians = 0.6108652381980153;  // 35°
     double effort = 0.9;                          // ρ

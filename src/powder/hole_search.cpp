@@ -3,23 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "core/error.h"
 
 namespace fabvdb::powder {
 
 namespace {
-
-double distance(const Vec3& a, const Vec3& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-bool spaced(const DrainHole& candidate, const std::vector<DrainHole>& holes, double min_distance) {
-    for (const DrainHole& hole : holes)
-        if (distance(candidate.center, hole.center) < min_distance) return false;
-    return true;
-}
 
 struct Choice {
     size_t candidate = 0;
@@ -35,7 +24,7 @@ Choice best_addition(const DrainabilityModel& model, const std::vector<DrainHole
     std::vector<size_t> allowed;
     for (size_t c = 0; c < candidates.size(); ++c)
         if ((only_cavity < 0 || candidates[c].cavity == uint32_t(only_cavity)) &&
-            spaced(candidates[c], holes, options.min_center_distance))
+            spaced_from(candidates[c], holes, options.min_center_distance))
             allowed.push_back(c);
     const size_t checks = std::min(allowed.size(), size_t(std::max(1, options.exact_checks)));
     std::partial_sort(allowed.begin(), allowed.begin() + checks, allowed.end(),
