@@ -5,6 +5,7 @@
 //! Error(CANCELLED) and returns nothing.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include <nlohmann/json.hpp>
