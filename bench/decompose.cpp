@@ -111,9 +111,18 @@ int main(int argc, char** argv) {
             auto start = std::chrono::steady_clock::now();
             apply_edit(shell, r.terms, settings.decomposition, cut, 0, d, progress);
             cut_ms = ms_since(start);
+            // Merge the cap with a part across one of its boundary edges.
+            const int cap = d.part_of_triangle[seed];
             Edit merge;
             merge.type = Edit::merge;
-            merge.points = {p0, p0 + 1.6 * ring * u};
+            const auto centroid = [&](size_t t) {
+                const Triangle& f = shell.outer.triangles[t];
+                return (1.0 / 3.0) * (shell.outer.vertices[f[0]] + shell.outer.vertices[f[1]] + shell.outer.vertices[f[2]]);
+            };
+            for (size_t t = 0; t < shell.triangle_count() && merge.points.empty(); ++t)
+                for (int k = 0; k < 3 && merge.points.empty(); ++k)
+                    if (d.part_of_triangle[t] == cap && d.part_of_triangle[shell.neighbor[t][k]] != cap)
+                        merge.points = {centroid(t), centroid(size_t(shell.neighbor[t][k]))};
             start = std::chrono::steady_clock::now();
             apply_edit(shell, r.terms, settings.decomposition, merge, 1, d, progress);
             merge_ms = ms_since(start);
