@@ -1,12 +1,30 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds fabvdb, and runs the main job on the
-# bundled sample (data/spot.obj), writing the results to demo-output/.
+# Installs the dependencies, builds fabvdb, and runs the main job of a powder
+# printing farm on the bundled sample (data/spot.obj scaled to 80 mm): repair
+# into a clean solid, hollow it with a 2.5 mm wall, hollow it again inside
+# `drain` and place and drill two drain holes, then check the drilled part with
+# the reference powder simulation. Results go to demo-output/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 out=demo-output
 mkdir -p "$out"
-echo "== fabvdb info data/spot.obj"
-build/fabvdb info data/spot.obj --fit 80mm --report "$out/spot_info.json"
+fabvdb=build/fabvdb
+echo "== inspect the input"
+$fabvdb info data/spot.obj --fit 80mm --report "$out/spot_info.json"
+echo "== repair into a clean solid"
+$fabvdb repair data/spot.obj --fit 80mm -o "$out/spot_repaired.stl" --report "$out/repair.json"
+echo "== hollow with a 2.5 mm wall"
+$fabvdb hollow "$out/spot_repaired.stl" --wall 2.5mm -o "$out/spot_hollow.stl" --report "$out/hollow.json"
+echo "== hollow, place and drill two drain holes"
+$fabvdb drain "$out/spot_repaired.stl" --wall 2.5mm --holes 2 -o "$out/spot_drained.stl" --heatmap "$out/drainability.ply" \
+  --report "$out/drain.json"
+echo "== check with the reference powder simulation"
+$fabvdb powder-sim "$out/spot_drained.stl" --holes "$out/drain.json" --report "$out/powder_sim.json"
 echo
-echo "Results are in $out/: spot_info.json (every figure of the inspection)."
+echo "Results are in $out/:"
+echo "  spot_repaired.stl   the clean watertight solid      (repair.json)"
+echo "  spot_hollow.stl     the hollowed part               (hollow.json)"
+echo "  spot_drained.stl    the part with its drain holes   (drain.json: holes, predicted residual powder)"
+echo "  drainability.ply    the cavity coloured by drainability (open in MeshLab or Blender)"
+echo "  powder_sim.json     the powder left inside by the reference simulation"

@@ -8,12 +8,12 @@
 
 static const cli_command* const commands[] = {
     &cmd_info,
-    &cmd_hollow,
-    &cmd_decompose,
     &cmd_repair,
-    &cmd_batch,
+    &cmd_hollow,
     &cmd_drain,
     &cmd_powder_sim,
+    &cmd_decompose,
+    &cmd_batch,
 };
 static const size_t command_count = sizeof(commands) / sizeof(commands[0]);
 
