@@ -185,7 +185,38 @@ void cli_note(const cli_run* run, const char* format, ...) {
     va_end(args);
 }
 
-/* --- input ------------------------------------------------------------- */
+/* --- input and reports ------------------------------------------------- */
+
+/* Bounds of all vertices; an empty mesh gives a zero box. */
+static void mesh_bounds(const fabvdb_mesh* mesh, double lo[3], double hi[3]) {
+    const double* v = fabvdb_mesh_vertices(mesh);
+    const size_t n = fabvdb_mesh_vertex_count(mesh);
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = n ? INFINITY : 0.0;
+        hi[k] = n ? -INFINITY : 0.0;
+    }
+    for (size_t i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            if (v[3 * i + k] < lo[k]) lo[k] = v[3 * i + k];
+            if (v[3 * i + k] > hi[k]) hi[k] = v[3 * i + k];
+        }
+}
+
+double cli_mesh_diagonal(const fabvdb_mesh* mesh) {
+    double lo[3], hi[3], sum = 0;
+    mesh_bounds(mesh, lo, hi);
+    for (int k = 0; k < 3; ++k) sum += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    return sqrt(sum);
+}
+
+int cli_write_report(const cli_run* run, const fabvdb_report* report) {
+    const cli_value* path = cli_get(run, "--report");
+    if (!path->set || !report) return CLI_EXIT_OK;
+    fabvdb_status status = fabvdb_report_write(run->ctx, report, path->text);
+    if (status != FABVDB_OK) return cli_fail(run, status);
+    cli_note(run, "wrote %s", path->text);
+    return CLI_EXIT_OK;
+}
 
 int cli_read_input(const cli_run* run, const char* path, fabvdb_mesh** out) {
     fabvdb_mesh* mesh = NULL;
@@ -206,20 +237,11 @@ int cli_read_input(const cli_run* run, const char* path, fabvdb_mesh** out) {
         factor = scale->number;
     }
     if (fit->set) {
-        const double* v = fabvdb_mesh_vertices(mesh);
-        const size_t n = fabvdb_mesh_vertex_count(mesh);
-        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        for (size_t i = 0; i < n; ++i)
-            for (int k = 0; k < 3; ++k) {
-                if (v[3 * i + k] < lo[k]) lo[k] = v[3 * i + k];
-                if (v[3 * i + k] > hi[k]) hi[k] = v[3 * i + k];
-            }
-        double longest = 0;
+        double lo[3], hi[3], longest = 0;
+        mesh_bounds(mesh, lo, hi);
         for (int k = 0; k < 3; ++k)
-            if (n && hi[k] - lo[k] > longest) longest = hi[k] - lo[k];
-        double diagonal = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                               (hi[2] - lo[2]) * (hi[2] - lo[2]));
-        const double target = fit->relative ? fit->number * diagonal : fit->number;
+            if (hi[k] - lo[k] > longest) longest = hi[k] - lo[k];
+        const double target = fit->relative ? fit->number * cli_mesh_diagonal(mesh) : fit->number;
         if (!(longest > 0) || !(target > 0)) {
             fabvdb_mesh_free(mesh);
             return cli_usage_error(run, "--fit needs a positive length and a model that is not flat to a point");

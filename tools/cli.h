@@ -94,6 +94,15 @@ int cli_exit_code(fabvdb_status status);
  * after printing the error. */
 int cli_read_input(const cli_run* run, const char* path, fabvdb_mesh** out);
 
+/* The bounding-box diagonal of all the mesh's vertices (0 for none): what a
+ * length given in % is relative to. */
+double cli_mesh_diagonal(const fabvdb_mesh* mesh);
+
+/* Writes the report to the --report path of the running command, if one was
+ * given, and notes it. Returns CLI_EXIT_OK, or the exit code after printing the
+ * error. The caller still owns (and frees) the report. */
+int cli_write_report(const cli_run* run, const fabvdb_report* report);
+
 /* Parses the units of one value; returns 0 on success. */
 int cli_parse_value(cli_option_type type, const char* text, double* number, int* relative);
 

@@ -2,7 +2,6 @@
  * free-form object (thin features stay solid) into as few parts as possible,
  * each castable in a two-piece rigid mold, with a parting direction and a
  * parting line per part, then applies the user's edits (thesis chapter 3). */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,20 +22,6 @@ static const cli_option options[] = {
     {"--edits", 0, CLI_STRING, "EDITS.json", NULL, "no_cut / cut / merge edits in world coordinates, applied in order"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb decompose')"},
 };
-
-static double bbox_diagonal(const fabvdb_mesh* mesh) {
-    const size_t count = fabvdb_mesh_vertex_count(mesh);
-    const double* v = fabvdb_mesh_vertices(mesh);
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, sum = 0.0;
-    for (size_t i = 0; i < count; ++i)
-        for (int k = 0; k < 3; ++k) {
-            if (v[3 * i + k] < lo[k]) lo[k] = v[3 * i + k];
-            if (v[3 * i + k] > hi[k]) hi[k] = v[3 * i + k];
-        }
-    if (count == 0) return 0.0;
-    for (int k = 0; k < 3; ++k) sum += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    return sqrt(sum);
-}
 
 static int run_decompose(cli_run* run) {
     const cli_value* output = cli_get(run, "--output");
@@ -66,14 +51,13 @@ static int run_decompose(cli_run* run) {
     int code = cli_read_input(run, run->positional[0], &mesh);
     if (code != CLI_EXIT_OK) return code;
     if (cli_get(run, "--shell")->set) {
-        options.shell_thickness = cli_length_mm(run, "--shell", bbox_diagonal(mesh));
+        options.shell_thickness = cli_length_mm(run, "--shell", cli_mesh_diagonal(mesh));
         if (!(options.shell_thickness > 0.0)) {
             fabvdb_mesh_free(mesh);
             return cli_usage_error(run, "--shell must be positive");
         }
     }
     const cli_value* edits = cli_get(run, "--edits");
-    const cli_value* report_path = cli_get(run, "--report");
     fabvdb_report* report = NULL;
     fabvdb_status status = fabvdb_mesh_decompose(run->ctx, mesh, &options, edits->set ? edits->text : NULL,
                                                  output->text, &report);
@@ -86,16 +70,9 @@ static int run_decompose(cli_run* run) {
     printf("%.0f parts, total moldability energy %.5f (gamma %g)%s\n", count, energy, options.gamma,
            under != 0 ? "" : "  WARNING: over gamma");
     cli_note(run, "wrote %s", output->text);
-    if (report_path->set) {
-        status = fabvdb_report_write(run->ctx, report, report_path->text);
-        if (status != FABVDB_OK) {
-            fabvdb_report_free(report);
-            return cli_fail(run, status);
-        }
-        cli_note(run, "wrote %s", report_path->text);
-    }
+    code = cli_write_report(run, report);
     fabvdb_report_free(report);
-    return CLI_EXIT_OK;
+    return code;
 }
 
 const cli_command cmd_decompose = {

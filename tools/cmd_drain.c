@@ -65,15 +65,7 @@ static int run_drain(cli_run* run) {
         free(orientations);
         return code;
     }
-    const double* v = fabvdb_mesh_vertices(mesh);
-    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, diagonal = 0.0;
-    for (size_t i = 0; i < fabvdb_mesh_vertex_count(mesh); ++i)
-        for (int k = 0; k < 3; ++k) {
-            if (i == 0 || v[3 * i + k] < lo[k]) lo[k] = v[3 * i + k];
-            if (i == 0 || v[3 * i + k] > hi[k]) hi[k] = v[3 * i + k];
-        }
-    for (int k = 0; k < 3; ++k) diagonal += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    diagonal = diagonal > 0 ? sqrt(diagonal) : 0.0;
+    const double diagonal = cli_mesh_diagonal(mesh);
     drain.wall = cli_length_mm(run, "--wall", diagonal);
     drain.hole_diameter = cli_length_mm(run, "--hole-diameter", diagonal);
     if (cli_get(run, "--voxel")->set) drain.voxel_size = cli_length_mm(run, "--voxel", diagonal);
@@ -95,14 +87,14 @@ static int run_drain(cli_run* run) {
         cli_note(run, "wrote %s", output->text);
         if (drain.heatmap_path) cli_note(run, "wrote %s", drain.heatmap_path);
     }
-    const cli_value* report_path = cli_get(run, "--report");
-    if (status == FABVDB_OK && report_path->set) {
-        status = fabvdb_report_write(run->ctx, report, report_path->text);
-        if (status == FABVDB_OK) cli_note(run, "wrote %s", report_path->text);
-    }
     if (status != FABVDB_OK) {
         fabvdb_report_free(report);
         return cli_fail(run, status);
+    }
+    const int written = cli_write_report(run, report);
+    if (written != CLI_EXIT_OK) {
+        fabvdb_report_free(report);
+        return written;
     }
     double holes_count = 0, predicted = 0, baseline = 0;
     fabvdb_report_number(run->ctx, report, "/predicted_residual_fraction", &predicted);

@@ -3,7 +3,6 @@
  * with a rounded cavity (--closing) and small voids filled (--min-cavity);
  * writes the mesh and, with --report,
  * every figure as JSON. */
-#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -21,19 +20,6 @@ static const cli_option options[] = {
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb hollow')"},
 };
 
-static double bbox_diagonal(const fabvdb_mesh* mesh) {
-    const size_t count = fabvdb_mesh_vertex_count(mesh);
-    const double* v = fabvdb_mesh_vertices(mesh);
-    if (count == 0) return 0.0;
-    double lo[3] = {v[0], v[1], v[2]}, hi[3] = {v[0], v[1], v[2]};
-    for (size_t i = 1; i < count; ++i)
-        for (int k = 0; k < 3; ++k) {
-            if (v[3 * i + k] < lo[k]) lo[k] = v[3 * i + k];
-            if (v[3 * i + k] > hi[k]) hi[k] = v[3 * i + k];
-        }
-    return sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 static int run_hollow(cli_run* run) {
     const cli_value* output = cli_get(run, "--output");
     if (!output->set) return cli_usage_error(run, "no output: give -o OUT");
@@ -43,7 +29,7 @@ static int run_hollow(cli_run* run) {
     fabvdb_mesh* mesh = NULL;
     int code = cli_read_input(run, run->positional[0], &mesh);
     if (code != CLI_EXIT_OK) return code;
-    const double diagonal = bbox_diagonal(mesh);
+    const double diagonal = cli_mesh_diagonal(mesh);
 
     fabvdb_hollow_options opts;
     fabvdb_hollow_options_init(&opts);
@@ -88,17 +74,9 @@ static int run_hollow(cli_run* run) {
     cli_note(run, "solid %.1f mm^3, shell %.1f mm^3, %.1f%% material saved, %.0f cavities (voxel %.3g mm)", solid,
              shell_volume, 100.0 * saved, cavities, voxel);
 
-    const cli_value* report_path = cli_get(run, "--report");
-    if (report_path->set) {
-        status = fabvdb_report_write(run->ctx, report, report_path->text);
-        if (status != FABVDB_OK) {
-            fabvdb_report_free(report);
-            return cli_fail(run, status);
-        }
-        cli_note(run, "wrote %s", report_path->text);
-    }
+    code = cli_write_report(run, report);
     fabvdb_report_free(report);
-    return CLI_EXIT_OK;
+    return code;
 }
 
 const cli_command cmd_hollow = {

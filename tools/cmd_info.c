@@ -57,17 +57,9 @@ static int run_info(cli_run* run) {
     print_count(run, report, "self-intersecting pairs", "/self_intersecting_pairs");
     print_count(run, report, "unreferenced vertices", "/unreferenced_vertices");
 
-    const cli_value* report_path = cli_get(run, "--report");
-    if (report_path->set) {
-        status = fabvdb_report_write(run->ctx, report, report_path->text);
-        if (status != FABVDB_OK) {
-            fabvdb_report_free(report);
-            return cli_fail(run, status);
-        }
-        cli_note(run, "wrote %s", report_path->text);
-    }
+    code = cli_write_report(run, report);
     fabvdb_report_free(report);
-    return CLI_EXIT_OK;
+    return code;
 }
 
 const cli_command cmd_info = {

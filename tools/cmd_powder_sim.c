@@ -83,14 +83,10 @@ static int run_powder_sim(cli_run* run) {
     free(orientations);
     if (code != CLI_EXIT_OK) return code;
     if (status != FABVDB_OK) return cli_fail(run, status);
-    const cli_value* report_path = cli_get(run, "--report");
-    if (report_path->set) {
-        status = fabvdb_report_write(run->ctx, report, report_path->text);
-        if (status != FABVDB_OK) {
-            fabvdb_report_free(report);
-            return cli_fail(run, status);
-        }
-        cli_note(run, "wrote %s", report_path->text);
+    const int written = cli_write_report(run, report);
+    if (written != CLI_EXIT_OK) {
+        fabvdb_report_free(report);
+        return written;
     }
     double initial = 0, residual = 0, fraction = 0;
     fabvdb_report_number(run->ctx, report, "/initial_mm3", &initial);

@@ -3,7 +3,6 @@
  * shells) into a clean watertight solid through a robust level set, or writes
  * the level set itself when OUT ends in .vdb. */
 #include <ctype.h>
-#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -26,20 +25,6 @@ static int ends_with_vdb(const char* path) {
            tolower((unsigned char)path[n - 2]) == 'd' && tolower((unsigned char)path[n - 1]) == 'b';
 }
 
-static double bbox_diagonal(const fabvdb_mesh* mesh) {
-    const size_t count = fabvdb_mesh_vertex_count(mesh);
-    const double* v = fabvdb_mesh_vertices(mesh);
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, sum = 0.0;
-    for (size_t i = 0; i < count; ++i)
-        for (int k = 0; k < 3; ++k) {
-            if (v[3 * i + k] < lo[k]) lo[k] = v[3 * i + k];
-            if (v[3 * i + k] > hi[k]) hi[k] = v[3 * i + k];
-        }
-    if (count == 0) return 0.0;
-    for (int k = 0; k < 3; ++k) sum += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    return sqrt(sum);
-}
-
 static int run_repair(cli_run* run) {
     const char* output = cli_get(run, "--output")->text;
     if (!cli_get(run, "--output")->set) return cli_usage_error(run, "-o OUT is required");
@@ -57,7 +42,7 @@ static int run_repair(cli_run* run) {
     fabvdb_mesh* mesh = NULL;
     int code = cli_read_input(run, run->positional[0], &mesh);
     if (code != CLI_EXIT_OK) return code;
-    const double diagonal = bbox_diagonal(mesh);
+    const double diagonal = cli_mesh_diagonal(mesh);
     if (cli_get(run, "--voxel")->set) {
         options.voxel_size = cli_length_mm(run, "--voxel", diagonal);
         if (!(options.voxel_size > 0.0)) {
@@ -93,17 +78,9 @@ static int run_repair(cli_run* run) {
         return cli_fail(run, status);
     }
     cli_note(run, "wrote %s", output);
-    const cli_value* report_path = cli_get(run, "--report");
-    if (report_path->set && report) {
-        status = fabvdb_report_write(run->ctx, report, report_path->text);
-        if (status != FABVDB_OK) {
-            fabvdb_report_free(report);
-            return cli_fail(run, status);
-        }
-        cli_note(run, "wrote %s", report_path->text);
-    }
+    code = cli_write_report(run, report);
     fabvdb_report_free(report);
-    return CLI_EXIT_OK;
+    return code;
 }
 
 const cli_command cmd_repair = {
