@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "volume/extract_mesh.h"
+#include "volume/memory_estimate.h"
 
 namespace fabvdb::volume {
 
@@ -17,20 +18,6 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-
-double mesh_area(const Mesh& mesh) {
-    double area = 0;
-    for (const Triangle& t : mesh.triangles) {
-        const Vec3& a = mesh.vertices[t[0]];
-        const Vec3& b = mesh.vertices[t[1]];
-        const Vec3& c = mesh.vertices[t[2]];
-        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
-        area += 0.5 * std::sqrt(x * x + y * y + z * z);
-    }
-    return area;
-}
 
 }  // namespace
 
@@ -51,7 +38,7 @@ Mesh low_res_surface(const openvdb::FloatGrid& grid, size_t target_triangles, Pr
     for (const Triangle& t : extracted.triangles)
         if (surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) == SurfaceMesh::null_face())
             throw Error(FABVDB_ERR_INTERNAL, "the extracted level-set surface is not manifold");
-    const double edge = edge_length_for_triangles(mesh_area(extracted), target_triangles);
+    const double edge = edge_length_for_triangles(surface_area(extracted), target_triangles);
     progress.update(0.1);
     CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(surface), edge, surface,
                                                        CGAL::parameters::number_of_iterations(3));
