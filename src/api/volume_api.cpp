@@ -46,16 +46,6 @@ fabvdb::volume::RepairOptions repair_options(const fabvdb_ctx* ctx, const fabvdb
     return repair;
 }
 
-double signed_volume(const fabvdb::Mesh& mesh) {
-    double six_volume = 0.0;
-    for (const fabvdb::Triangle& t : mesh.triangles) {
-        const auto &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-        six_volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                      a[2] * (b[0] * c[1] - b[1] * c[0]);
-    }
-    return six_volume / 6.0;
-}
-
 nlohmann::json repair_report(const fabvdb::volume::RepairResult& result) {
     nlohmann::json report;
     report["voxel_size"] = result.grid->voxelSize()[0];

@@ -1,4 +1,4 @@
-//! Bounding box and validation of the plain mesh type.
+//! Bounding box, signed volume and validation of the plain mesh type.
 #include "core/mesh.h"
 
 #include <cmath>
@@ -32,6 +32,18 @@ BoundingBox bounding_box(const Mesh& mesh, bool referenced_only) {
     }
     if (box.min[0] > box.max[0]) return BoundingBox{};
     return box;
+}
+
+double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+           a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+double signed_volume(const Mesh& mesh) {
+    double six_volume = 0.0;
+    for (const Triangle& t : mesh.triangles)
+        six_volume += six_signed_tetrahedron_volume(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    return six_volume / 6.0;
 }
 
 void validate_mesh(const Mesh& mesh, const std::string& what) {

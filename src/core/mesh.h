@@ -29,6 +29,13 @@ struct BoundingBox {
 //! `referenced_only` is false). Empty input gives a zero box.
 BoundingBox bounding_box(const Mesh& mesh, bool referenced_only = true);
 
+//! Six times the signed volume of the tetrahedron (origin, a, b, c).
+double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c);
+//! Signed volume enclosed by the triangles (divergence theorem about the
+//! origin): positive for closed outward shells, negative for inward ones,
+//! meaningless for open ones.
+double signed_volume(const Mesh& mesh);
+
 //! Throws Error(FABVDB_ERR_BAD_INPUT) naming `what` (usually the file) and the
 //! defect when a coordinate is not finite or an index is out of range.
 void validate_mesh(const Mesh& mesh, const std::string& what);

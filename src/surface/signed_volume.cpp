@@ -13,9 +13,7 @@ std::vector<double> component_signed_volumes(const Mesh& mesh, const std::vector
         Vec3 p[3];
         for (int k = 0; k < 3; ++k)
             for (int d = 0; d < 3; ++d) p[k][d] = mesh.vertices[mesh.triangles[t][k]][d] - origin[d];
-        six_volumes[triangle_component[t]] += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                                              p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                                              p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+        six_volumes[triangle_component[t]] += six_signed_tetrahedron_volume(p[0], p[1], p[2]);
     }
     for (double& v : six_volumes) v /= 6.0;
     return six_volumes;

@@ -18,12 +18,6 @@ struct Components {
     void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
 };
 
-double signed_tetra_volume(const Vec3& a, const Vec3& b, const Vec3& c) {
-    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-            a[2] * (b[0] * c[1] - b[1] * c[0])) /
-           6.0;
-}
-
 //! Whether the ray from `origin` along a fixed generic direction crosses
 //! triangle abc (Möller–Trumbore).
 bool ray_crosses(const Vec3& origin, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -67,7 +61,7 @@ std::vector<CavityRegion> split_cavity_regions(const Mesh& cavity_surface) {
     for (size_t s = 0; s < shell_triangles.size(); ++s)
         for (uint32_t t : shell_triangles[s]) {
             const Triangle& tri = mesh.triangles[t];
-            shell_volume[s] += signed_tetra_volume(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
+            shell_volume[s] += six_signed_tetrahedron_volume(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]) / 6.0;
         }
 
     // Each outer shell starts a region; each island joins the smallest outer

@@ -55,18 +55,6 @@ void validate(const HollowOptions& o) {
     require(std::isfinite(o.min_cavity_volume) && o.min_cavity_volume >= 0.0, "minimum cavity volume must be >= 0");
 }
 
-double signed_volume(const Mesh& mesh) {
-    double volume = 0.0;
-    for (const Triangle& t : mesh.triangles) {
-        const Vec3& a = mesh.vertices[t[0]];
-        const Vec3& b = mesh.vertices[t[1]];
-        const Vec3& c = mesh.vertices[t[2]];
-        volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                  a[2] * (b[0] * c[1] - b[1] * c[0]);
-    }
-    return volume / 6.0;
-}
-
 //! Distance band of the solid reaching `interior_depth` mm inside, with the
 //! closest outer triangle of every band voxel (for the exact snap).
 struct SolidDistance {
