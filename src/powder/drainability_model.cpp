@@ -1,6 +1,7 @@
 //! The drainability model (see drainability_model.h).
 #include "powder/drainability_model.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -45,9 +46,10 @@ struct DrainabilityModel::TurnChain {
 
 namespace {
 
-//! I − ρQ for the captured patches; `leave` (if not null) receives r.
+//! I − ρQ for the leaving fractions `capture` (per turn, per patch);
+//! `leave` (if not null) receives r.
 SparseMatrix turn_system(const std::vector<OrientationFlow>& turns, const SparseMatrix& chain, double effort,
-                         const std::vector<std::vector<char>>& captured, Eigen::VectorXd* leave) {
+                         const std::vector<std::vector<float>>& capture, Eigen::VectorXd* leave) {
     const size_t n = size_t(chain.rows());
     const double weight = 1.0 / double(turns.size());
     if (leave) *leave = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
@@ -55,11 +57,13 @@ SparseMatrix turn_system(const std::vector<OrientationFlow>& turns, const Sparse
     for (size_t k = 0; k < turns.size(); ++k) {
         const StochasticMatrix& settle = turns[k].settle;
         for (size_t i = 0; i < n; ++i)
-            for (uint32_t e = settle.row_start[i]; e < settle.row_start[i + 1]; ++e)
-                if (captured[k][settle.column[e]]) {
-                    if (leave) (*leave)[int(i)] += weight * settle.weight[e];
-                    removed.emplace_back(int(i), int(settle.column[e]), weight * settle.weight[e]);
-                }
+            for (uint32_t e = settle.row_start[i]; e < settle.row_start[i + 1]; ++e) {
+                const float fraction = capture[k][settle.column[e]];
+                if (fraction <= 0.0f) continue;
+                const double w = weight * settle.weight[e] * fraction;
+                if (leave) (*leave)[int(i)] += w;
+                removed.emplace_back(int(i), int(settle.column[e]), w);
+            }
     }
     SparseMatrix captured_part(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
     captured_part.setFromTriplets(removed.begin(), removed.end());
@@ -79,9 +83,26 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     if (turns.empty()) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the orientation set is empty");
     tan_repose_ = std::tan(options.repose_radians);
     sin_repose_ = std::sin(options.repose_radians);
-    for (const OrientationFlow& flow : turns) turn_region_members_.push_back(region_members(flow));
-    first_region_members_ = region_members(first);
-    first_region_samples_.resize(first_region_members_.size());
+    for (const OrientationFlow& flow : turns) {
+        turn_region_members_.push_back(region_members(flow));
+        std::vector<Basin> basins(turn_region_members_.back().size());
+        std::vector<std::vector<std::pair<double, uint32_t>>> sorted(basins.size());
+        for (uint32_t j = 0; j < patches.size(); ++j) {
+            const int32_t region = flow.region[flow.main_destination[j]];
+            const double up = -dot(patches.normal[j], flow.gravity);
+            if (region >= 0 && up > 0.0) sorted[size_t(region)].push_back({-dot(patches.site[j], flow.gravity), j});
+        }
+        for (size_t r = 0; r < basins.size(); ++r) {
+            std::sort(sorted[r].begin(), sorted[r].end());
+            for (const auto& [height, j] : sorted[r]) {
+                basins[r].patch.push_back(j);
+                basins[r].height.push_back(height);
+                basins[r].horizontal_area.push_back(patches.area[j] * -dot(patches.normal[j], flow.gravity));
+            }
+        }
+        turn_basins_.push_back(std::move(basins));
+    }
+    first_region_samples_.resize(region_members(first).size());
     for (uint32_t s = 0; s < powder.position.size(); ++s) {
         const int32_t region = first.region[powder.rest_patch[s]];
         if (region >= 0) first_region_samples_[size_t(region)].push_back(s);
@@ -112,40 +133,104 @@ bool DrainabilityModel::absorbing(const DrainHole& hole, const Vec3& gravity) co
     return dot(hole.axis, gravity) > sin_repose_;
 }
 
-bool DrainabilityModel::above_cone(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const {
+double DrainabilityModel::cone_height(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const {
+    // The crater's cone of repose rises from the rim of the mouth, not its centre.
     const Vec3 v{point[0] - hole.center[0], point[1] - hole.center[1], point[2] - hole.center[2]};
     const double height = -dot(v, gravity);
     const double across = std::sqrt(std::max(0.0, dot(v, v) - height * height));
     const double mouth = 0.5 * hole.diameter;
-    if (across <= mouth && height >= -mouth) return true;
-    return height >= tan_repose_ * across;
+    const double hole_height = -dot(hole.center, gravity);
+    return across <= mouth ? hole_height - mouth : hole_height + tan_repose_ * (across - mouth);
 }
 
-template <class Visit>
-void DrainabilityModel::for_each_captured(const DrainHole& hole, const OrientationFlow& flow,
-                                          const std::vector<std::vector<uint32_t>>& members, Visit visit) const {
-    if (!absorbing(hole, flow.gravity)) return;
-    const int32_t region = flow.region[flow.main_destination[hole.patch]];
-    if (region < 0) return;
-    for (uint32_t j : members[size_t(region)])
-        if (above_cone(hole, patches_.site[j], flow.gravity)) visit(j);
+bool DrainabilityModel::above_cone(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const {
+    return -dot(point, gravity) >= cone_height(hole, point, gravity);
+}
+
+int32_t DrainabilityModel::drained_basin(const DrainHole& hole, const OrientationFlow& flow) const {
+    if (!absorbing(hole, flow.gravity)) return -1;
+    return flow.region[flow.main_destination[hole.patch]];
 }
 
 template <class Visit>
 void DrainabilityModel::for_each_first_turn_sample(const DrainHole& hole, Visit visit) const {
-    if (!absorbing(hole, first_.gravity)) return;
-    const int32_t region = first_.region[first_.main_destination[hole.patch]];
+    const int32_t region = drained_basin(hole, first_);
     if (region < 0) return;
     for (uint32_t s : first_region_samples_[size_t(region)])
         if (above_cone(hole, powder_.position[s], first_.gravity)) visit(s);
 }
 
-std::vector<std::vector<char>> DrainabilityModel::captured_turn_patches(const std::vector<DrainHole>& holes) const {
-    std::vector<std::vector<char>> captured(turns_.size(), std::vector<char>(patches_.size(), 0));
-    for (size_t k = 0; k < turns_.size(); ++k)
-        for (const DrainHole& hole : holes)
-            for_each_captured(hole, turns_[k], turn_region_members_[k], [&](uint32_t j) { captured[k][j] = 1; });
-    return captured;
+std::vector<std::vector<double>> DrainabilityModel::pool_volumes(const std::vector<double>& retained_mass) const {
+    std::vector<std::vector<double>> pools(turns_.size());
+    tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
+        const OrientationFlow& flow = turns_[k];
+        pools[k].assign(turn_basins_[k].size(), 0.0);
+        for (size_t i = 0; i < retained_mass.size(); ++i) {
+            if (retained_mass[i] <= 0.0) continue;
+            for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e) {
+                const int32_t region = flow.region[flow.settle.column[e]];
+                if (region >= 0) pools[k][size_t(region)] += retained_mass[i] * flow.settle.weight[e];
+            }
+        }
+    });
+    return pools;
+}
+
+double DrainabilityModel::pool_drain_fraction(size_t turn, size_t basin_index, double volume,
+                                              const std::vector<const DrainHole*>& holes) const {
+    const Basin& basin = turn_basins_[turn][basin_index];
+    const size_t count = basin.patch.size();
+    if (count == 0 || holes.empty()) return 0.0;
+    // A pool too small to measure is a film on the lowest patch.
+    volume = std::max(volume, 1e-3 * powder_.sample_volume);
+    // The level: the pool fills the height field from its lowest patch up.
+    double level = basin.height[0], below_area = 0.0, held = 0.0;
+    size_t wet = 0;
+    while (true) {
+        below_area += basin.horizontal_area[wet];
+        ++wet;
+        const double next = wet < count ? basin.height[wet] : HUGE_VAL;
+        const double room = below_area > 0.0 ? below_area * (next - level) : 0.0;
+        if (held + room >= volume || wet == count) {
+            level += below_area > 0.0 ? (volume - held) / below_area : 0.0;
+            break;
+        }
+        held += room;
+        level = next;
+    }
+    // What the cones keep: per wet patch, the pool up to the lowest cone.
+    const Vec3& gravity = turns_[turn].gravity;
+    double kept = 0.0;
+    for (size_t w = 0; w < wet; ++w) {
+        double top = level;
+        for (const DrainHole* hole : holes)
+            top = std::min(top, cone_height(*hole, patches_.site[basin.patch[w]], gravity));
+        kept += basin.horizontal_area[w] * std::max(0.0, top - basin.height[w]);
+    }
+    return std::clamp(1.0 - kept / volume, 0.0, 1.0);
+}
+
+std::vector<std::vector<float>> DrainabilityModel::turn_capture(
+    const std::vector<DrainHole>& holes, const std::vector<std::vector<double>>& pools) const {
+    std::vector<std::vector<float>> capture(turns_.size(), std::vector<float>(patches_.size(), 0.0f));
+    tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
+        std::vector<std::pair<int32_t, const DrainHole*>> drained;
+        for (const DrainHole& hole : holes) {
+            const int32_t basin = drained_basin(hole, turns_[k]);
+            if (basin >= 0) drained.push_back({basin, &hole});
+        }
+        std::sort(drained.begin(), drained.end());
+        for (size_t a = 0; a < drained.size();) {
+            size_t b = a;
+            std::vector<const DrainHole*> together;
+            while (b < drained.size() && drained[b].first == drained[a].first) together.push_back(drained[b++].second);
+            const size_t basin = size_t(drained[a].first);
+            const float fraction = float(pool_drain_fraction(k, basin, pools[k][basin], together));
+            for (uint32_t j : turn_region_members_[k][basin]) capture[k][j] = fraction;
+            a = b;
+        }
+    });
+    return capture;
 }
 
 DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes) const {
@@ -164,7 +249,8 @@ DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes)
     }
 
     Eigen::VectorXd leave;
-    const SparseMatrix system = turn_system(turns_, chain_->matrix, options_.effort, captured_turn_patches(holes), &leave);
+    const SparseMatrix system = turn_system(turns_, chain_->matrix, options_.effort,
+                                            turn_capture(holes, pool_volumes(result.retained_mass)), &leave);
     const Eigen::VectorXd d = solve(system, options_.effort * leave);
 
     result.drainability.resize(n);
@@ -182,27 +268,37 @@ std::vector<double> DrainabilityModel::estimate_gains(const std::vector<DrainHol
                                                       const DrainEvaluation& current,
                                                       const std::vector<DrainHole>& candidates) const {
     const size_t n = patches_.size();
-    const std::vector<std::vector<char>> captured = captured_turn_patches(holes);
+    const std::vector<std::vector<double>> pools = pool_volumes(current.retained_mass);
+    const std::vector<std::vector<float>> capture = turn_capture(holes, pools);
     const double weight = 1.0 / double(turns_.size());
     const double rho = options_.effort;
 
     // Expected discounted presence u = (I − ρQ)^-T m' of the retained powder.
-    const SparseMatrix transposed = SparseMatrix(turn_system(turns_, chain_->matrix, options_.effort, captured, nullptr).transpose());
+    const SparseMatrix transposed =
+        SparseMatrix(turn_system(turns_, chain_->matrix, options_.effort, capture, nullptr).transpose());
     Eigen::VectorXd retained(static_cast<Eigen::Index>(n));
     for (size_t j = 0; j < n; ++j) retained[int(j)] = current.retained_mass[j];
     const Eigen::VectorXd presence = solve(transposed, retained);
 
-    // Powder arriving on each patch in a turn of each orientation, times its
-    // chance of staying if not captured there.
-    std::vector<std::vector<float>> arrival_value(turns_.size(), std::vector<float>(n, 0.0f));
+    // Per turn orientation and basin: the powder arriving there in a turn
+    // times its chance of staying otherwise, and the holes draining it.
+    std::vector<std::vector<double>> arrival_value(turns_.size());
+    std::vector<std::vector<std::vector<const DrainHole*>>> basin_holes(turns_.size());
     tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
-        const StochasticMatrix& settle = turns_[k].settle;
-        std::vector<double> arrival(n, 0.0);
+        const OrientationFlow& flow = turns_[k];
+        arrival_value[k].assign(turn_basins_[k].size(), 0.0);
+        basin_holes[k].resize(turn_basins_[k].size());
         for (size_t i = 0; i < n; ++i)
-            for (uint32_t e = settle.row_start[i]; e < settle.row_start[i + 1]; ++e)
-                arrival[settle.column[e]] += rho * weight * presence[int(i)] * settle.weight[e];
-        for (size_t j = 0; j < n; ++j)
-            arrival_value[k][j] = captured[k][j] ? 0.0f : float(arrival[j] * (1.0 - current.drainability[j]));
+            for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e) {
+                const uint32_t j = flow.settle.column[e];
+                if (flow.region[j] < 0) continue;
+                arrival_value[k][size_t(flow.region[j])] +=
+                    rho * weight * presence[int(i)] * flow.settle.weight[e] * (1.0 - current.drainability[j]);
+            }
+        for (const DrainHole& hole : holes) {
+            const int32_t basin = drained_basin(hole, flow);
+            if (basin >= 0) basin_holes[k][size_t(basin)].push_back(&hole);
+        }
     });
 
     std::vector<double> gains(candidates.size(), 0.0);
@@ -212,9 +308,16 @@ std::vector<double> DrainabilityModel::estimate_gains(const std::vector<DrainHol
             if (!current.drained_first[s])
                 gain += powder_.sample_volume * (1.0 - current.drainability[powder_.rest_patch[s]]);
         });
-        for (size_t k = 0; k < turns_.size(); ++k)
-            for_each_captured(candidates[c], turns_[k], turn_region_members_[k],
-                              [&](uint32_t j) { gain += arrival_value[k][j]; });
+        for (size_t k = 0; k < turns_.size(); ++k) {
+            const int32_t basin = drained_basin(candidates[c], turns_[k]);
+            if (basin < 0 || arrival_value[k][size_t(basin)] <= 0.0) continue;
+            std::vector<const DrainHole*> together = basin_holes[k][size_t(basin)];
+            const double before =
+                together.empty() ? 0.0 : capture[k][turn_region_members_[k][size_t(basin)].front()];
+            together.push_back(&candidates[c]);
+            const double after = pool_drain_fraction(k, size_t(basin), pools[k][size_t(basin)], together);
+            gain += std::max(0.0, after - before) * arrival_value[k][size_t(basin)];
+        }
         gains[c] = gain;
     });
     return gains;

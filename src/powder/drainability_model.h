@@ -3,16 +3,19 @@
 //! dropped powder, it evaluates a set of drain holes.
 //!
 //! - A hole is absorbing for gravity g when its axis is within 90° − θ_r of g
-//!   (powder slides down the tunnel). It then drains the powder resting on the
-//!   floor region its own powder reaches, wherever that powder lies above the
-//!   hole's cone of repose (a crater of slope θ_r around the hole) or in its
-//!   mouth.
+//!   (powder slides down the tunnel). Powder above the hole's cone of repose
+//!   (a crater of slope θ_r rising from the rim of its mouth) drains.
 //! - First turn (the part as printed, full of powder): each powder sample is
-//!   tested against the cones, so the crater left around a hole is a volume.
+//!   tested against the cones of the holes in the basin it settles in.
 //! - Later turns: the operator turns the part with probability ρ (finite
 //!   effort) to an orientation of the set (equal weights); powder moves by
-//!   S(g) and leaves where it settles on a captured patch. Drainability
-//!   d = ρ(r + Q d) per patch, one sparse solve (BiCGSTAB).
+//!   S(g) and gathers as a pool in the basin where it settles. The pool has a
+//!   volume: it fills the basin (the up-facing patches draining into it, as
+//!   a height field) to the level that holds the powder retained after the
+//!   first turn, and the part of it above the cones of the basin's holes
+//!   leaves. That fraction of the powder settling in the basin leaves; the
+//!   rest stays for the next turn. Drainability d = ρ(r + Q d) per patch,
+//!   one sparse solve (BiCGSTAB).
 //! - Residual = cavity volume − first-turn drain − Σ retained mass · d.
 //! A class because the hole search evaluates many hole sets on the same flows.
 #pragma once
@@ -67,22 +70,38 @@ public:
 
     //! First-order gain in drained volume (mm³) of adding each candidate to
     //! `holes`, whose evaluation is `current`: newly captured first-turn
-    //! samples and later-turn arrivals, each times its chance (1 − d) of
-    //! staying otherwise. Parallel over candidates.
+    //! samples, and per turn orientation the rise of the basin's leaving
+    //! fraction times the powder arriving there, each times its chance
+    //! (1 − d) of staying otherwise. Parallel over candidates.
     std::vector<double> estimate_gains(const std::vector<DrainHole>& holes, const DrainEvaluation& current,
                                        const std::vector<DrainHole>& candidates) const;
 
-    //! Whether `hole` drains powder resting on `point` for gravity `gravity`
-    //! (point above the hole's cone of repose, or in its mouth).
+    //! Whether `hole` drains powder at `point` for gravity `gravity` (point
+    //! above the hole's cone of repose, or in its mouth).
     bool above_cone(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const;
+    //! Height (along −gravity) of the hole's cone of repose above `point`'s spot.
+    double cone_height(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const;
     bool absorbing(const DrainHole& hole, const Vec3& gravity) const;
 
 private:
-    //! Captured patches (0/1) per turn orientation, and per sample for the first turn.
-    std::vector<std::vector<char>> captured_turn_patches(const std::vector<DrainHole>& holes) const;
-    template <class Visit>
-    void for_each_captured(const DrainHole& hole, const OrientationFlow& flow,
-                           const std::vector<std::vector<uint32_t>>& members, Visit visit) const;
+    //! Up-facing patches draining into one basin (floor region) of one turn
+    //! orientation, lowest first: the basin as a height field.
+    struct Basin {
+        std::vector<uint32_t> patch;
+        std::vector<double> height, horizontal_area;
+    };
+    //! Pool volume per basin per turn orientation: the powder retained after
+    //! the first turn, moved by S(g).
+    std::vector<std::vector<double>> pool_volumes(const std::vector<double>& retained_mass) const;
+    //! Fraction of a pool of `volume` in basin `basin` of turn `turn` that
+    //! lies above the cone of at least one of `holes`.
+    double pool_drain_fraction(size_t turn, size_t basin, double volume,
+                               const std::vector<const DrainHole*>& holes) const;
+    //! Leaving fraction per patch per turn orientation for a hole set.
+    std::vector<std::vector<float>> turn_capture(const std::vector<DrainHole>& holes,
+                                                 const std::vector<std::vector<double>>& pools) const;
+    //! The basin of `flow` that `hole` drains, or −1 (not absorbing, or no basin).
+    int32_t drained_basin(const DrainHole& hole, const OrientationFlow& flow) const;
     template <class Visit>
     void for_each_first_turn_sample(const DrainHole& hole, Visit visit) const;
 
@@ -92,9 +111,9 @@ private:
     const PowderSamples& powder_;
     DrainabilityOptions options_;
     double tan_repose_ = 0.0, sin_repose_ = 0.0;
-    //! Patches of each floor region, per turn orientation and for the first.
+    //! Patches of each floor region, per turn orientation.
     std::vector<std::vector<std::vector<uint32_t>>> turn_region_members_;
-    std::vector<std::vector<uint32_t>> first_region_members_;
+    std::vector<std::vector<Basin>> turn_basins_;
     //! Powder samples per first-orientation floor region.
     std::vector<std::vector<uint32_t>> first_region_samples_;
     //! Σ_g w_g S(g), the turn chain without holes (Eigen, defined in the .cpp).

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include <Eigen/Geometry>
 #include <tbb/parallel_for.h>
@@ -14,6 +15,7 @@ namespace fabvdb::powder {
 namespace {
 
 enum Cell : uint8_t { kFree = 0, kSolid = 1, kOutside = 2, kGrain = 3 };
+constexpr int kMaxWindow = 16;
 
 struct Drill {
     Eigen::Vector3d center, axis;
@@ -170,14 +172,27 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
     const auto& n = frame.size();
     const size_t column_stride = size_t(n[2]);
     const int directions[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
-    double threshold[8];
-    for (int d = 0; d < 8; ++d) threshold[d] = window * (d < 4 ? 1.0 : std::sqrt(2.0)) * tan_repose;
+    // Heights are whole cells: the ground s steps away is too low when it lies
+    // more than s · run · tan θ below, rounded up (a staircase drawn from a
+    // slope of exactly θ stays). The full window sets the angle on open
+    // ground (35°, window 4: 3 cells over 4, 4 over 4√2, that is 36.9° and
+    // 35.3°); shorter distances let grains run down narrow steep tunnels.
+    double run[8][kMaxWindow + 1];
+    int allowed_drop[8][kMaxWindow + 1];
+    for (int d = 0; d < 8; ++d)
+        for (int s = 1; s <= window; ++s) {
+            run[d][s] = s * (d < 4 ? 1.0 : std::sqrt(2.0));
+            allowed_drop[d][s] = int(std::ceil(run[d][s] * tan_repose - 1e-9));
+        }
     const size_t removed_mark = SIZE_MAX;
     size_t removed = 0;
-    const int max_passes = 8 * (n[0] + n[1] + n[2]) + 100;
-    for (int pass = 0; pass < max_passes; ++pass) {
+    // A grain that topples is above lower ground within `window` steps, so it
+    // falls or leaves within that many passes unless the pile is only
+    // jiggling: stop after that many passes with no fall and no exit.
+    int passes_without_descent = 0;
+    for (size_t pass = 0; passes_without_descent <= window + 1; ++pass) {
         if (progress.cancelled()) break;
-        size_t moved = 0;
+        size_t moved = 0, descended = 0;
         for (size_t g = 0; g < grains.size(); ++g) {
             size_t i = grains[g];
             int z = int(i % n[2]), y = int((i / n[2]) % n[1]), x = int(i / (column_stride * n[1]));
@@ -193,6 +208,7 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
             }
             if (fell) {
                 ++moved;
+                ++descended;
                 if (cells[i] == kOutside) {
                     grains[g] = removed_mark;
                     ++removed;
@@ -205,39 +221,42 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
             // Topple toward the steepest direction that exceeds the repose.
             int best = -1;
             double best_slope = 0.0;
-            const int start = int((i * 2654435761u + size_t(pass)) & 7u);
+            const int start = int((i * 2654435761u + pass) & 7u);
             for (int k = 0; k < 8; ++k) {
                 const int d = (start + k) & 7;
                 const int dx = directions[d][0], dy = directions[d][1];
-                bool open = true, sink = false;
-                for (int s = 1; s <= window && open && !sink; ++s) {
-                    if (!frame.inside(x + s * dx, y + s * dy, z)) {
-                        open = false;
-                        break;
-                    }
-                    const uint8_t c = cells[frame.index(x + s * dx, y + s * dy, z)];
-                    if (c == kOutside) sink = true;
-                    else if (c != kFree) open = false;
-                }
-                if (!open) continue;
-                double drop = HUGE_VAL;
-                if (!sink) {
-                    const int ax = x + window * dx, ay = y + window * dy;
-                    const int deepest = std::max(0, z - int(std::ceil(threshold[d])) - 1);
-                    for (int zz = z - 1; zz >= deepest; --zz) {
-                        const uint8_t c = cells[frame.index(ax, ay, zz)];
-                        if (c == kOutside) break;
-                        if (c != kFree) {
-                            drop = z - zz;
-                            break;
+                // Ground heights along the way, as drops below the grain. The
+                // ground ahead may fall away at most one cell per step: at an
+                // edge (a deeper drop, a bottomless column, the outside) the
+                // grain sees only the edge, so a pit or cliff a few cells away
+                // does not pull a grain resting on flat ground.
+                int previous_drop = 1;  // the grain's own support
+                for (int s = 1; s <= window; ++s) {
+                    const int ax = x + s * dx, ay = y + s * dy;
+                    if (!frame.inside(ax, ay, z)) break;
+                    const uint8_t c = cells[frame.index(ax, ay, z)];
+                    if (c != kFree && c != kOutside) break;  // the way is blocked
+                    int drop = previous_drop + 1;
+                    bool edge = true;
+                    if (c == kFree)
+                        for (int zz = z - 1; zz >= std::max(0, z - previous_drop - 1); --zz) {
+                            const uint8_t below = cells[frame.index(ax, ay, zz)];
+                            if (below == kOutside) break;
+                            if (below != kFree) {
+                                drop = z - zz;
+                                edge = false;
+                                break;
+                            }
+                        }
+                    if (drop > allowed_drop[d][s]) {
+                        const double slope = drop / run[d][s];
+                        if (best < 0 || slope > best_slope) {
+                            best = d;
+                            best_slope = slope;
                         }
                     }
-                }
-                if (drop <= threshold[d]) continue;
-                const double slope = drop / threshold[d];
-                if (best < 0 || slope > best_slope) {
-                    best = d;
-                    best_slope = slope;
+                    if (edge) break;
+                    previous_drop = drop;
                 }
             }
             if (best < 0) continue;
@@ -247,6 +266,7 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
             if (cells[j] == kOutside) {
                 grains[g] = removed_mark;
                 ++removed;
+                ++descended;
                 continue;
             }
             cells[j] = kGrain;
@@ -259,6 +279,7 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
             grains.resize(kept);
         }
         if (moved == 0) break;
+        passes_without_descent = descended > 0 ? 0 : passes_without_descent + 1;
     }
     progress.check();
     return removed;
@@ -272,7 +293,8 @@ SandpileResult simulate_sandpile(const openvdb::FloatGrid& solid, const std::vec
     if (options.routine.empty()) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the routine has no turn");
     if (!(options.repose_radians > 0.0 && options.repose_radians < M_PI / 2))
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the angle of repose must be between 0 and 90 degrees");
-    if (options.slope_window < 1) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the slope window must be at least 1");
+    if (options.slope_window < 1 || options.slope_window > kMaxWindow)
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the slope window must be 1 to " + std::to_string(kMaxWindow) + " cells");
     const double h = options.cell_size > 0.0 ? options.cell_size : solid.voxelSize()[0];
     std::vector<Drill> drills;
     for (const SandpileHole& hole : holes) {

@@ -5,11 +5,13 @@
 //! outside. For each turn of the routine the part is voxelised in a frame
 //! whose z axis points up (against that turn's gravity); then, until nothing
 //! moves, a grain falls while the cell below it is free, and a grain on the
-//! surface of the pile topples one cell sideways toward a direction where the
-//! ground `slope_window` cells away lies lower than the angle of repose
-//! allows (a slope measured over a few cells, so a one-cell step of a gentle
-//! staircase does not count as steep). Grains that reach the outside are
-//! gone. Between turns the grains keep their world positions. Reports the
+//! surface of the pile topples one cell sideways toward the steepest
+//! direction where the ground, within `slope_window` cells, lies lower than
+//! the angle of repose allows (drops in whole cells, rounded up, so a
+//! staircase drawn at exactly the angle stays; the ground seen ahead falls
+//! away at most one cell per step, so a pit or cliff a few cells away does
+//! not pull a grain resting on flat ground). Grains that reach the outside are
+//! //! gone. Between turns the grains keep their world positions. Reports the
 //! powder left inside after each turn. Cancellable (Error(CANCELLED)).
 #pragma once
 

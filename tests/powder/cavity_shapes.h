@@ -1,12 +1,14 @@
 //! Hollow test parts as level sets with known cavities, shared by the powder
-//! tests: a hollow sphere and two separate hollow spheres. Each gives the part (negative inside, cavity
-//! included), its cavity (negative inside the cavity) and the shell (negative
-//! in the wall) = part minus cavity.
+//! tests: a hollow sphere, two separate hollow spheres, and a box cavity with
+//! a raised shelf that has a pocket (a well) sunk into it. Each gives the part
+//! (negative inside, cavity included), its cavity (negative inside the cavity)
+//! and the shell (negative in the wall) = part minus cavity.
 #pragma once
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetSphere.h>
+#include <openvdb/tools/MeshToVolume.h>
 
 #include "core/mesh.h"
 
@@ -38,6 +40,43 @@ inline HollowPart two_hollow_spheres(double radius, double wall, double voxel) {
     openvdb::tools::csgUnion(*a.part, *b.part);
     openvdb::tools::csgUnion(*a.cavity, *b.cavity);
     return finish(a.part, a.cavity);
+}
+
+//! A box-shaped level set with corners `lo` and `hi`.
+inline openvdb::FloatGrid::Ptr box(const Vec3& lo, const Vec3& hi, double voxel) {
+    const openvdb::Vec3s low{float(lo[0]), float(lo[1]), float(lo[2])}, high{float(hi[0]), float(hi[1]), float(hi[2])};
+    const openvdb::math::BBox<openvdb::Vec3s> bounds{low, high};
+    return openvdb::tools::createLevelSetBox<openvdb::FloatGrid>(
+        bounds, *openvdb::math::Transform::createLinearTransform(voxel));
+}
+
+//! The pocket of `shelf_with_pocket`: powder in it stays in the first turn
+//! unless a hole opens in it, since it lies above the main floor.
+struct Pocket {
+    Vec3 lo{6, -5, 4}, hi{14, 5, 10};
+};
+
+//! A cavity (wall `wall` all round, every box of the cavity grown by it) made
+//! of a main room x ∈ [-16, 16], y ∈ [-8, 8], z ∈ [0, 20] whose floor rises
+//! to a shelf at z = 10 for x > 4, and the Pocket sunk into the shelf.
+inline HollowPart shelf_with_pocket(double wall, double voxel) {
+    openvdb::initialize();
+    const Pocket pocket;
+    const std::vector<std::pair<Vec3, Vec3>> rooms = {
+        {{-16, -8, 0}, {4, 8, 20}}, {{4, -8, 10}, {16, 8, 20}}, {pocket.lo, {pocket.hi[0], pocket.hi[1], 10.5}}};
+    openvdb::FloatGrid::Ptr cavity, part;
+    for (const auto& [lo, hi] : rooms) {
+        auto room = box(lo, hi, voxel);
+        auto grown = box({lo[0] - wall, lo[1] - wall, lo[2] - wall}, {hi[0] + wall, hi[1] + wall, hi[2] + wall}, voxel);
+        if (!cavity) {
+            cavity = room;
+            part = grown;
+        } else {
+            openvdb::tools::csgUnion(*cavity, *room);
+            openvdb::tools::csgUnion(*part, *grown);
+        }
+    }
+    return finish(part, cavity);
 }
 
 }  // namespace fabvdb::test
