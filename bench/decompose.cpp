@@ -1,8 +1,10 @@
 // Mold decomposition against the thesis' timings (Tables 3.2 and 3.3, single
 // thread, Intel Core i7 2.2 GHz): per model, at the thesis' S_low size, the
 // pre-computation per direction, the coarse decomposition per iteration, the
-// part count, and the cut and merge edits; each next to the thesis' figure
-// as a ratio (thesis / ours, > 1 is faster). Runs single-threaded unless
+// part count, the cut and merge edits and the boundary smoothing; each next
+// to the thesis' figure as a ratio (thesis / ours, > 1 is faster). Also the
+// energy, the smoothness before and after smoothing, and the merged part's
+// E_P with the ranked direction candidates against all 81 axes. Runs single-threaded unless
 // --threads N is given. Usage: bench_decompose [--threads N] [model ...]
 #include <tbb/global_control.h>
 
@@ -33,15 +35,16 @@ struct ThesisRow {
     double per_iteration_ms;  // coarse decomposition per iteration
     int parts;
     double cut_ms, merge_ms;  // Table 3.3
+    double smoothing_ms;      // Table 3.3, smoothing all snake vertices
 };
 
 const ThesisRow rows[] = {
-    {"sphere", "sphere.obj", 320, 3.84, 11.0, 2, 5.60, 26.2},
-    {"torus", "torus.obj", 1152, 34.9, 82.0, 2, 15.0, 71.4},
-    {"kitten", "kitten.obj", 2310, 136, 396, 2, 47.4, 209},
-    {"airplane", "airplane.obj", 19136, 13910.28, 31711, 2, 692, 1872},
-    {"fertility", "fertility.off", 8788, 2011.67, 4886.17, 2, 208, 891},
-    {"bunny", "bunny.off", 2740, 210, 2110, 2, 53.2, 232},
+    {"sphere", "sphere.obj", 320, 3.84, 11.0, 2, 5.60, 26.2, 90.8},
+    {"torus", "torus.obj", 1152, 34.9, 82.0, 2, 15.0, 71.4, 665},
+    {"kitten", "kitten.obj", 2310, 136, 396, 2, 47.4, 209, 3964},
+    {"airplane", "airplane.obj", 19136, 13910.28, 31711, 2, 692, 1872, 176574},
+    {"fertility", "fertility.off", 8788, 2011.67, 4886.17, 2, 208, 891, 51580},
+    {"bunny", "bunny.off", 2740, 210, 2110, 2, 53.2, 232, 3430},
 };
 
 double ms_since(std::chrono::steady_clock::time_point start) {
@@ -61,8 +64,9 @@ int main(int argc, char** argv) {
     }
     tbb::global_control control(tbb::global_control::max_allowed_parallelism, size_t(std::max(threads, 1)));
     std::printf("threads %d; ratio = thesis / ours (higher is faster)\n", threads);
-    std::printf("%-10s %7s | %-26s | %-26s | %-11s | %-26s | %-26s | %s\n", "model", "S_low", "precompute/dir ms (ratio)",
-                "coarse/iter ms (ratio)", "parts", "cut ms (ratio)", "merge ms (ratio)", "energy (gamma 0.05)");
+    std::printf("%-9s %6s | %-25s | %-25s | %-13s | %-25s | %-25s | %-27s | %s\n", "model", "S_low",
+                "precompute/dir ms (ratio)", "coarse/iter ms (ratio)", "parts", "cut ms (ratio)", "merge ms (ratio)",
+                "smoothing ms (ratio)", "E_P (gamma 0.05), E_smooth before -> after; merge E_P ranked/exhaustive");
     for (const ThesisRow& row : rows) {
         if (!only.empty() && std::find(only.begin(), only.end(), row.name) == only.end()) continue;
         Progress progress;
@@ -72,13 +76,15 @@ int main(int argc, char** argv) {
         settings.shell.target_triangles = row.low_res;
         settings.shell.thickness =
             0.03 * std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
-        const DecomposeResult r = decompose_mesh(input, settings, {}, progress);
+        DecomposeResult r = decompose_mesh(input, settings, {}, progress);
         const double per_direction = double(r.report["seconds"]["precompute_per_direction"]) * 1000;
         const nlohmann::json& last = r.report["attempts"].back();
         const double per_iteration = double(last["seconds_per_iteration"]) * 1000;
+        const double smoothing_ms = double(r.report["seconds"]["smoothing"]) * 1000;
+        const nlohmann::json& smoothness = r.report["smoothing"]["smoothness"];
         // Cut: a closed loop around the middle of part 0; merge it back.
-        const Shell& shell = r.shell;
-        Decomposition d = r.decomposition;
+        Shell& shell = r.shell;
+        Decomposition& d = r.decomposition;
         Vec3 centre{0, 0, 0}, axis{0, 0, 0};
         size_t count = 0;
         for (size_t t = 0; t < shell.triangle_count(); ++t)
@@ -106,7 +112,7 @@ int main(int argc, char** argv) {
         cut.closed = true;
         for (int i = 0; i < 12; ++i)
             cut.points.push_back(p0 + ring * (std::cos(2 * M_PI * i / 12) * u + std::sin(2 * M_PI * i / 12) * v));
-        double cut_ms = NAN, merge_ms = NAN;
+        double cut_ms = NAN, merge_ms = NAN, ranked = NAN, exhaustive = NAN;
         try {
             auto start = std::chrono::steady_clock::now();
             apply_edit(shell, r.terms, settings.decomposition, cut, 0, d, progress);
@@ -124,18 +130,25 @@ int main(int argc, char** argv) {
                     if (d.part_of_triangle[t] == cap && d.part_of_triangle[shell.neighbor[t][k]] != cap)
                         merge.points = {centroid(t), centroid(size_t(shell.neighbor[t][k]))};
             start = std::chrono::steady_clock::now();
-            apply_edit(shell, r.terms, settings.decomposition, merge, 1, d, progress);
+            const nlohmann::json record = apply_edit(shell, r.terms, settings.decomposition, merge, 1, d, progress);
             merge_ms = ms_since(start);
+            // The merged part's direction from the ranked candidates against all 81 axes.
+            const int merged = record["parts_touched"][0];
+            ranked = d.parts[merged].energy.total;
+            exhaustive = best_parting_line(shell, r.terms, d.part_of_triangle, merged, settings.decomposition.weights,
+                                           progress, 81)
+                             .energy.total;
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: edit skipped: %s\n", row.name, e.what());
         }
-        std::printf("%-10s %7zu | %9.2f vs %8.2f (%5.1fx) | %9.2f vs %8.0f (%5.1fx) | %2zu (thesis %d) | %8.2f vs %6.1f (%5.1fx) | "
-                    "%8.2f vs %6.1f (%5.1fx) | %.4f\n",
+        std::printf("%-9s %6zu | %8.2f vs %8.2f (%5.1fx) | %8.2f vs %8.0f (%5.1fx) | %2zu (thesis %d) | %7.2f vs %6.1f "
+                    "(%5.1fx) | %7.2f vs %6.1f (%5.1fx) | %8.1f vs %8.0f (%5.1fx) | %.4f, %.3f -> %.3f; %.4f/%.4f\n",
                     row.name, shell.triangle_count(), per_direction, row.per_direction_ms,
                     row.per_direction_ms / per_direction, per_iteration, row.per_iteration_ms,
-                    row.per_iteration_ms / per_iteration, r.decomposition.parts.size(), row.parts, cut_ms, row.cut_ms,
-                    row.cut_ms / cut_ms, merge_ms, row.merge_ms, row.merge_ms / merge_ms,
-                    double(r.report["total_moldability_energy"]));
+                    row.per_iteration_ms / per_iteration, r.report["parts"].size(), row.parts, cut_ms, row.cut_ms,
+                    row.cut_ms / cut_ms, merge_ms, row.merge_ms, row.merge_ms / merge_ms, smoothing_ms,
+                    row.smoothing_ms, row.smoothing_ms / smoothing_ms, double(r.report["total_moldability_energy"]),
+                    double(smoothness.front()), double(smoothness.back()), ranked, exhaustive);
         std::fflush(stdout);
     }
     return 0;

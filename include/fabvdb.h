@@ -462,6 +462,10 @@ typedef struct fabvdb_decompose_options {
     double w_coarse_overlap;  /* w_O (overlap penalty of region growing), >= 0; default 1e6 */
     int low_res_triangles;    /* N_Delta, the size of the surface the decomposition runs on, >= 100;
                                  default 10000 */
+    int smoothing_iterations; /* boundary smoothing (snakes), >= 0; 0: boundaries stay on S_low edges
+                                 as grown; default 10 */
+    double w_smooth;          /* w_l, weight of the boundary smoothness against the moldability, >= 0;
+                                 default 1 */
 } fabvdb_decompose_options;
 
 /* Fills *options with the defaults above and sets struct_size. NULL does
@@ -473,16 +477,17 @@ FABVDB_API void fabvdb_decompose_options_init(fabvdb_decompose_options* options)
  * two-piece rigid mold, with a parting direction and a parting line per part
  * (the method of the thesis' chapter 3: low-resolution surface and prisms
  * from the robust level set, thin features cast solid, region growing with
- * the moldability cost, graph-cut parting lines made connected, then the
- * user's edits; the snake smoothing of part boundaries, thesis section 3.4.5, is not
- * in this version, so boundaries follow S_low edges).
+ * the moldability cost, graph-cut parting lines made connected, the snake
+ * smoothing of part boundaries (thesis section 3.4.5: boundary vertices of
+ * S_low slide along the surface), then the user's edits).
  * mesh: borrowed; may be dirty (it goes through the robust signed distance).
  * opts: NULL for the defaults.
  * edits_path: NULL, or a JSON file of edits applied in order after the
  *   automatic decomposition, in world coordinates (README "fabvdb decompose"):
  *   {"edits": [{"type": "no_cut", "points": [[x,y,z],...], "radius": r},
  *              {"type": "cut", "points": [[x,y,z],...], "closed": false},
- *              {"type": "merge", "points": [[x,y,z],[x,y,z]]}]}.
+ *              {"type": "merge", "points": [[x,y,z],[x,y,z]]},
+ *              {"type": "smooth", "points": [[x,y,z],...], "radius": r}]}.
  *   Each edit recomputes only the parts it touches.
  * out_dir: folder that receives decomposition.json, decomposition.ply and
  *   deformation.ply; written as a new folder beside it and renamed into place
@@ -492,7 +497,9 @@ FABVDB_API void fabvdb_decompose_options_init(fabvdb_decompose_options* options)
  *   shell_thickness, unit_scale, low_res {triangles, thin_segments, voxel_size,
  *   ...}, overlap_pairs, attempts [{parts, iterations,
  *   region_cost_per_iteration, moldability_energy, seconds_per_iteration,
- *   parting_line_seconds}], edits [{type, parts_touched, parts_after, seconds,
+ *   parting_line_seconds}], smoothing {iterations, smoothness [E_smooth per
+ *   accepted iteration], moldability_energy [likewise], vertices_moved,
+ *   parts_touched}, edits [{type, parts_touched, parts_after, seconds,
  *   total_moldability_energy, warning}], part_count, parts [{id, parting_direction,
  *   moldability_energy, area}], total_moldability_energy, under_gamma,
  *   warnings [text], seconds {stage: seconds}.

@@ -19,7 +19,10 @@ static const cli_option options[] = {
     {"--max-parts", 0, CLI_INT, "N", "16", "cap of the automatic part count"},
     {"--draft", 0, CLI_ANGLE, "ANGLE", "1deg", "draft angle"},
     {"--low-res", 0, CLI_INT, "N", "10000", "triangles of the low-resolution surface the decomposition runs on"},
-    {"--edits", 0, CLI_STRING, "EDITS.json", NULL, "no_cut / cut / merge edits in world coordinates, applied in order"},
+    {"--smoothing", 0, CLI_INT, "N", "10", "boundary-smoothing (snake) iterations; 0 keeps the grown boundaries"},
+    {"--smoothness", 0, CLI_NUMBER, "W", "1", "weight w_l of boundary smoothness against moldability"},
+    {"--edits", 0, CLI_STRING, "EDITS.json", NULL,
+     "no_cut / cut / merge / smooth edits in world coordinates, applied in order"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb decompose')"},
 };
 
@@ -32,6 +35,8 @@ static int run_decompose(cli_run* run) {
     options.max_parts = (int)cli_get(run, "--max-parts")->number;
     options.draft_degrees = cli_get(run, "--draft")->number;
     options.low_res_triangles = (int)cli_get(run, "--low-res")->number;
+    options.smoothing_iterations = (int)cli_get(run, "--smoothing")->number;
+    options.w_smooth = cli_get(run, "--smoothness")->number;
     if (cli_get(run, "--solid")->given) options.flags |= FABVDB_DECOMPOSE_SOLID;
     const char* parts = cli_get(run, "--parts")->text;
     if (strcmp(parts, "auto") != 0) {
@@ -46,6 +51,8 @@ static int run_decompose(cli_run* run) {
     if (!(options.draft_degrees >= 0 && options.draft_degrees <= 30))
         return cli_usage_error(run, "--draft must be between 0 and 30 degrees");
     if (options.low_res_triangles < 100) return cli_usage_error(run, "--low-res must be at least 100");
+    if (options.smoothing_iterations < 0) return cli_usage_error(run, "--smoothing must be at least 0");
+    if (!(options.w_smooth >= 0)) return cli_usage_error(run, "--smoothness must be at least 0");
 
     fabvdb_mesh* mesh = NULL;
     int code = cli_read_input(run, run->positional[0], &mesh);
@@ -78,15 +85,16 @@ static int run_decompose(cli_run* run) {
 const cli_command cmd_decompose = {
     "decompose",
     "cut a free-form object into parts that each cast in a two-piece mold (parting lines, edits)",
-    "INPUT -o OUTDIR [--shell LEN] [--solid] [--gamma G] [--parts auto|N] [--draft ANGLE] [--edits EDITS.json] "
-    "[--report R.json]",
+    "INPUT -o OUTDIR [--shell LEN] [--solid] [--gamma G] [--parts auto|N] [--draft ANGLE] [--smoothing N] "
+    "[--edits EDITS.json] [--report R.json]",
     "Decomposes the thin shell of INPUT (thickness --shell; thin features stay solid) into as few parts as\n"
     "possible, each moldable in a two-piece rigid mold, by the method of chapter 3 of the thesis 'Fabrication-aware geometry optimization':\n"
     "a low-resolution surface and prisms from the robust level set, region growing over the 162 candidate\n"
     "parting directions, a graph-cut parting line per part made of one top and one bottom patch. Parts are\n"
     "added from 2 until the total moldability energy (overhang plus overlap area, measured with the model\n"
-    "scaled to a unit cube) is under --gamma. --edits applies no_cut strokes, cuts and merges given in\n"
-    "world coordinates; only the touched parts change. OUTDIR receives decomposition.json (everything mold\n"
-    "generation needs), decomposition.ply (the input coloured by part, bottom patches darker) and\n"
-    "deformation.ply (the estimated deformation as a heat map).",
+    "scaled to a unit cube) is under --gamma. The part boundaries are then smoothed as snakes (--smoothing\n"
+    "iterations) without raising the energy over --gamma. --edits applies no_cut strokes, cuts, merges and\n"
+    "smoothing strokes given in world coordinates; only the touched parts change. OUTDIR receives\n"
+    "decomposition.json (everything mold generation needs), decomposition.ply (the input coloured by part,\n"
+    "bottom patches darker) and deformation.ply (the estimated deformation as a heat map).",
     options, sizeof(options) / sizeof(options[0]), 1, 1, run_decompose};

@@ -33,6 +33,8 @@ fabvdb::surface::DecomposeSettings settings_for(const fabvdb_ctx* ctx, const fab
     require_range(o.w_overhang >= 0 && o.w_overlap >= 0 && o.w_coarse_overlap >= 0,
                   "the weights must be >= 0");
     require_range(o.low_res_triangles >= 100, "low_res_triangles must be >= 100");
+    require_range(o.smoothing_iterations >= 0, "smoothing_iterations must be >= 0");
+    require_range(std::isfinite(o.w_smooth) && o.w_smooth >= 0, "w_smooth must be >= 0");
     const fabvdb::BoundingBox box = fabvdb::bounding_box(mesh);
     const double longest = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
     fabvdb::surface::DecomposeSettings s;
@@ -47,6 +49,8 @@ fabvdb::surface::DecomposeSettings settings_for(const fabvdb_ctx* ctx, const fab
     s.decomposition.weights.overhang = o.w_overhang;
     s.decomposition.weights.overlap = o.w_overlap;
     s.decomposition.overlap_weight = o.w_coarse_overlap;
+    s.decomposition.smoothing_iterations = o.smoothing_iterations;
+    s.decomposition.smoothness_weight = o.w_smooth;
     return s;
 }
 
@@ -68,6 +72,8 @@ void fabvdb_decompose_options_init(fabvdb_decompose_options* options) {
     options->w_overlap = 1;
     options->w_coarse_overlap = 1e6;
     options->low_res_triangles = 10000;
+    options->smoothing_iterations = 10;
+    options->w_smooth = 1;
 }
 
 fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_decompose_options* opts,

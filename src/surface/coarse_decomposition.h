@@ -23,6 +23,8 @@ struct DecompositionOptions {
     double overlap_weight = 1e6;      //!< w_O
     MoldabilityWeights weights;       //!< w_H, w_L
     int max_iterations = 20;          //!< region-growing iterations
+    double smoothness_weight = 1.0;   //!< w_l of the boundary smoothing (eq. 3.3)
+    int smoothing_iterations = 10;    //!< boundary-smoothing iterations (0: none)
 };
 
 struct Decomposition {

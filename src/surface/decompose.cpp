@@ -1,9 +1,11 @@
 //! decompose_mesh: shell_from_mesh → compute_moldability_terms →
-//! coarse_decomposition → edits, timing each stage for the report.
+//! coarse_decomposition → smooth_boundaries → edits, timing each stage for
+//! the report.
 #include "surface/decompose.h"
 
 #include <chrono>
 
+#include "surface/boundary_smoothing.h"
 #include "surface/shell_from_mesh.h"
 
 namespace fabvdb::surface {
@@ -29,6 +31,10 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
     result.decomposition =
         coarse_decomposition(result.shell, result.terms, settings.decomposition, report["attempts"], progress);
     lap("coarse_decomposition");
+    if (settings.decomposition.smoothing_iterations > 0) progress.stage("boundary smoothing");
+    report["smoothing"] = smooth_boundaries(result.shell, result.terms, result.decomposition, settings.decomposition,
+                                            nullptr, progress);
+    lap("smoothing");
     report["edits"] = nlohmann::json::array();
     if (!edits.empty()) progress.stage("edits");
     for (size_t i = 0; i < edits.size(); ++i) {

@@ -1,6 +1,6 @@
 //! The whole mold decomposition of an input mesh (thesis Alg. 1 up to mold
 //! generation): pre-computation (shell, moldability terms), the automatic
-//! decomposition loop, then the user's edits in order. Returns everything
+//! decomposition loop, boundary smoothing, then the user's edits in order. Returns everything
 //! the output files and the report need; a cancelled run throws
 //! Error(CANCELLED) and returns nothing.
 #pragma once

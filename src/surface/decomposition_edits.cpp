@@ -1,6 +1,7 @@
 //! decomposition_edits: JSON parsing, brute-force nearest queries on S_low
 //! (edits touch a handful of points), local regrowth for no-cut strokes,
-//! Dijkstra paths for cuts, unions for merges.
+//! Dijkstra paths for cuts, unions for merges, the snake smoothing restricted
+//! to the stroke for smooth edits.
 #include "surface/decomposition_edits.h"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "surface/boundary_smoothing.h"
 #include "surface/vec3_ops.h"
 
 namespace fabvdb::surface {
@@ -235,6 +237,29 @@ std::vector<int> apply_merge(const Shell& shell, const MoldabilityTerms& terms, 
     return {kept, gone};
 }
 
+std::vector<int> apply_smooth(Shell& shell, MoldabilityTerms& terms, const DecompositionOptions& options,
+                              const Edit& edit, const std::string& what, Decomposition& decomposition,
+                              Progress& progress) {
+    std::vector<char> selected(shell.outer.vertices.size(), 0);
+    const double r2 = edit.radius * edit.radius;
+    for (size_t v = 0; v < selected.size(); ++v)
+        for (const Vec3& p : edit.points)
+            if (squared(shell.outer.vertices[v] - p) <= r2) selected[v] = 1;
+    std::vector<char> on_boundary(selected.size(), 0);
+    for (size_t t = 0; t < shell.triangle_count(); ++t)
+        for (int k = 0; k < 3; ++k)
+            if (decomposition.part_of_triangle[shell.neighbor[t][k]] != decomposition.part_of_triangle[t])
+                on_boundary[shell.outer.triangles[t][k]] = 1;
+    bool reaches = false;
+    for (size_t v = 0; v < selected.size(); ++v) reaches |= selected[v] && on_boundary[v];
+    if (!reaches) throw Error(FABVDB_ERR_BAD_INPUT, what + ": the smoothing stroke does not reach a part boundary");
+    // A smooth edit smooths even when the automatic smoothing is off.
+    DecompositionOptions smoothing = options;
+    if (smoothing.smoothing_iterations <= 0) smoothing.smoothing_iterations = DecompositionOptions{}.smoothing_iterations;
+    const nlohmann::json record = smooth_boundaries(shell, terms, decomposition, smoothing, &selected, progress);
+    return record["parts_touched"].get<std::vector<int>>();
+}
+
 Vec3 read_point(const nlohmann::json& value, const std::string& what) {
     if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
         !value[2].is_number())
@@ -269,14 +294,16 @@ std::vector<Edit> read_edits(const std::string& path) {
             edit.type = Edit::cut;
         else if (type == "merge")
             edit.type = Edit::merge;
+        else if (type == "smooth")
+            edit.type = Edit::smooth;
         else
-            throw Error(FABVDB_ERR_BAD_INPUT, what + ": unknown type \"" + type + "\" (no_cut, cut, merge)");
+            throw Error(FABVDB_ERR_BAD_INPUT, what + ": unknown type \"" + type + "\" (no_cut, cut, merge, smooth)");
         if (!item.contains("points") || !item["points"].is_array() || item["points"].empty())
             throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"points\"");
         for (const auto& p : item["points"]) edit.points.push_back(read_point(p, what));
-        if (edit.type == Edit::no_cut) {
+        if (edit.type == Edit::no_cut || edit.type == Edit::smooth) {
             if (!item.contains("radius") || !item["radius"].is_number() || !(item["radius"].get<double>() > 0))
-                throw Error(FABVDB_ERR_BAD_INPUT, what + ": a no_cut stroke needs \"radius\" > 0");
+                throw Error(FABVDB_ERR_BAD_INPUT, what + ": a " + type + " stroke needs \"radius\" > 0");
             edit.radius = item["radius"];
         }
         if (edit.type == Edit::cut && edit.points.size() < 2)
@@ -292,7 +319,7 @@ std::vector<Edit> read_edits(const std::string& path) {
     return edits;
 }
 
-nlohmann::json apply_edit(const Shell& shell, const MoldabilityTerms& terms, const DecompositionOptions& options,
+nlohmann::json apply_edit(Shell& shell, MoldabilityTerms& terms, const DecompositionOptions& options,
                           const Edit& edit, size_t index, Decomposition& decomposition, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     const std::string what = "edit " + std::to_string(index + 1);
@@ -310,6 +337,10 @@ nlohmann::json apply_edit(const Shell& shell, const MoldabilityTerms& terms, con
         case Edit::merge:
             type = "merge";
             touched = apply_merge(shell, terms, options, edit, what, decomposition, progress);
+            break;
+        case Edit::smooth:
+            type = "smooth";
+            touched = apply_smooth(shell, terms, options, edit, what, decomposition, progress);
             break;
     }
     drop_empty_parts(decomposition);

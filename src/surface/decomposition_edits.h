@@ -2,7 +2,8 @@
 //! coordinates so that they survive remeshing, read from a JSON file:
 //!   {"edits": [{"type": "no_cut", "points": [[x,y,z], ...], "radius": r},
 //!              {"type": "cut", "points": [[x,y,z], ...], "closed": true|false},
-//!              {"type": "merge", "points": [[x,y,z], [x,y,z]]}]}
+//!              {"type": "merge", "points": [[x,y,z], [x,y,z]]},
+//!              {"type": "smooth", "points": [[x,y,z], ...], "radius": r}]}
 //! - no_cut: the S_low triangles within `radius` of the stroke (its largest
 //!   edge-connected piece) become one element and the parts it touches are
 //!   regrown together (§3.4.3), so the stroke ends up inside one part;
@@ -10,7 +11,9 @@
 //!   paths, splits every part it separates; each piece gets
 //!   argmin_{d∈D} E_P(P, d);
 //! - merge: the two (neighbouring) parts under the points become one, with
-//!   argmin_{d∈D} E_P(P, d).
+//!   argmin_{d∈D} E_P(P, d);
+//! - smooth: the boundary smoothing of §3.4.5 (selective smoothing, §3.5)
+//!   moving only the snake vertices within `radius` of the stroke's points.
 //! Only the touched parts change; their parting lines are recomputed.
 #pragma once
 
@@ -24,7 +27,7 @@
 namespace fabvdb::surface {
 
 struct Edit {
-    enum Type { no_cut, cut, merge };
+    enum Type { no_cut, cut, merge, smooth };
     Type type = no_cut;
     std::vector<Vec3> points;
     double radius = 0;
@@ -37,9 +40,11 @@ std::vector<Edit> read_edits(const std::string& path);
 
 //! Applies `edit` (number `index` in the file, for messages); returns a record
 //! {type, parts_touched, parts_after, seconds, total_moldability_energy}.
+//! A smooth edit moves S_low vertices, so it updates `shell` and `terms`.
 //! Throws Error(BAD_INPUT) for an edit that does not apply (a cut that
-//! separates nothing, a merge of one part or of parts that do not touch).
-nlohmann::json apply_edit(const Shell& shell, const MoldabilityTerms& terms, const DecompositionOptions& options,
+//! separates nothing, a merge of one part or of parts that do not touch, a
+//! smoothing stroke that reaches no part boundary).
+nlohmann::json apply_edit(Shell& shell, MoldabilityTerms& terms, const DecompositionOptions& options,
                           const Edit& edit, size_t index, Decomposition& decomposition, Progress& progress);
 
 }  // namespace fabvdb::surface

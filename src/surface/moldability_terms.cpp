@@ -19,13 +19,21 @@ namespace {
 struct Point2 {
     double x, y;
 };
-using Polygon2 = std::vector<Point2>;
+//! A clipped polygon kept on the stack (clipping runs in the innermost loop).
+//! Each clip at most doubles the corners (one kept corner and one crossing
+//! per edge), so a triangle clipped three times has at most 24 — in exact
+//! arithmetic at most 6.
+struct Polygon2 {
+    std::array<Point2, 24> corner;
+    int size = 0;
+    void push(const Point2& p) { corner[size++] = p; }
+};
 
 double signed_area(const Polygon2& p) {
     double twice = 0;
-    for (size_t i = 0; i < p.size(); ++i) {
-        const Point2& a = p[i];
-        const Point2& b = p[(i + 1) % p.size()];
+    for (int i = 0; i < p.size; ++i) {
+        const Point2& a = p.corner[i];
+        const Point2& b = p.corner[(i + 1) % p.size];
         twice += a.x * b.y - a.y * b.x;
     }
     return 0.5 * twice;
@@ -33,51 +41,75 @@ double signed_area(const Polygon2& p) {
 
 //! Area of the intersection of two counter-clockwise triangles (clipping).
 double intersection_area(const std::array<Point2, 3>& a, const std::array<Point2, 3>& b) {
-    Polygon2 polygon(a.begin(), a.end());
+    Polygon2 polygon;
+    for (const Point2& p : a) polygon.push(p);
     Polygon2 clipped;
-    for (int k = 0; k < 3 && !polygon.empty(); ++k) {
+    for (int k = 0; k < 3 && polygon.size > 0; ++k) {
         const Point2 p = b[k];
         const Point2 q = b[(k + 1) % 3];
         const auto side = [&](const Point2& r) { return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x); };
-        clipped.clear();
-        for (size_t i = 0; i < polygon.size(); ++i) {
-            const Point2& s = polygon[i];
-            const Point2& e = polygon[(i + 1) % polygon.size()];
+        clipped.size = 0;
+        for (int i = 0; i < polygon.size; ++i) {
+            const Point2& s = polygon.corner[i];
+            const Point2& e = polygon.corner[(i + 1) % polygon.size];
             const double ss = side(s);
             const double se = side(e);
-            if (ss >= 0) clipped.push_back(s);
+            if (ss >= 0) clipped.push(s);
             if ((ss >= 0) != (se >= 0)) {
                 const double t = ss / (ss - se);
-                clipped.push_back({s.x + t * (e.x - s.x), s.y + t * (e.y - s.y)});
+                clipped.push({s.x + t * (e.x - s.x), s.y + t * (e.y - s.y)});
             }
         }
-        polygon.swap(clipped);
+        polygon = clipped;
     }
-    return polygon.size() < 3 ? 0.0 : std::abs(signed_area(polygon));
+    return polygon.size < 3 ? 0.0 : std::abs(signed_area(polygon));
+}
+
+//! A triangle projected on the plane normal to `axis` (basis u, v),
+//! counter-clockwise in (u, v) when it faces the axis (`facing` ≥ 0).
+std::array<Point2, 3> project_triangle(const std::array<Vec3, 3>& corners, const Vec3& u, const Vec3& v,
+                                       double facing) {
+    std::array<Point2, 3> p;
+    for (int k = 0; k < 3; ++k) p[k] = {dot(corners[k], u), dot(corners[k], v)};
+    if (facing < 0) std::swap(p[1], p[2]);
+    return p;
+}
+
+//! The plane basis (u, v) of the projections along `axis`.
+std::pair<Vec3, Vec3> projection_basis(const Vec3& axis) {
+    const Vec3 helper = std::abs(axis[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 u = normalized(cross(axis, helper));
+    return {u, cross(axis, u)};
 }
 
 struct Box2 {
     double lo[2], hi[2];
 };
 
-MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& axis) {
+//! Triangles whose vertices moved since `previous` (the overlaps along the axis).
+struct Change {
+    const std::vector<uint32_t>& triangles;
+    const std::vector<char>& flag;  //!< per triangle: in `triangles`
+    const MoldabilityTerms::Overlaps& previous;
+};
+
+//! The overlaps along `axis`. With a `change`, only the pairs of a changed
+//! triangle are measured again (its box against the grid); the previous
+//! pairs of unchanged triangles are kept.
+MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& axis, const Change* change) {
     const size_t n = shell.triangle_count();
-    const Vec3 helper = std::abs(axis[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    const Vec3 u = normalized(cross(axis, helper));
-    const Vec3 v = cross(axis, u);
+    const auto [u, v] = projection_basis(axis);
     std::vector<std::array<Point2, 3>> projected(n);
     std::vector<Box2> boxes(n);
     std::vector<char> usable(n);
     double mean_size = 0;
     for (size_t t = 0; t < n; ++t) {
-        auto& tri = projected[t];
-        for (int k = 0; k < 3; ++k) {
-            const Vec3& p = shell.outer.vertices[shell.outer.triangles[t][k]];
-            tri[k] = {dot(p, u), dot(p, v)};
-        }
+        const Triangle& f = shell.outer.triangles[t];
         const double facing = dot(shell.normal[t], axis);
         usable[t] = std::abs(facing) > 1e-9;
-        if (facing < 0) std::swap(tri[1], tri[2]);  // counter-clockwise in (u, v)
+        auto& tri = projected[t];
+        tri = project_triangle({shell.outer.vertices[f[0]], shell.outer.vertices[f[1]], shell.outer.vertices[f[2]]}, u,
+                               v, facing);
         Box2& box = boxes[t];
         box.lo[0] = std::min({tri[0].x, tri[1].x, tri[2].x});
         box.hi[0] = std::max({tri[0].x, tri[1].x, tri[2].x});
@@ -116,37 +148,75 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
     }
     const double area_scale = shell.unit_scale * shell.unit_scale;
     const double tiny = 1e-9 * mean_size * mean_size;
-    std::vector<std::vector<std::pair<uint32_t, float>>> found(n);
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
-            const size_t c = size_t(j) * nx + i;
-            for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x)
-                for (uint32_t y = x + 1; y < cell_start[c + 1]; ++y) {
-                    const uint32_t a = cell_items[x], b = cell_items[y];
-                    const Box2& ba = boxes[a];
-                    const Box2& bb = boxes[b];
-                    const double overlap_lo_x = std::max(ba.lo[0], bb.lo[0]);
-                    const double overlap_lo_y = std::max(ba.lo[1], bb.lo[1]);
-                    if (overlap_lo_x > std::min(ba.hi[0], bb.hi[0]) || overlap_lo_y > std::min(ba.hi[1], bb.hi[1]))
-                        continue;
-                    if (cell_of(overlap_lo_x, 0) != i || cell_of(overlap_lo_y, 1) != j) continue;
-                    if (dot(shell.normal[a], axis) * dot(shell.normal[b], axis) < 0) continue;
-                    const double shared = intersection_area(projected[a], projected[b]);
-                    if (shared <= tiny) continue;
-                    found[a].push_back({b, float(shared * area_scale)});
-                    found[b].push_back({a, float(shared * area_scale)});
+    struct Pair {
+        uint32_t a, b;
+        float area;
+    };
+    std::vector<Pair> found;  // each overlapping pair once
+    // A pair is measured in the one cell that holds the lower corner of the
+    // overlap of its boxes.
+    const auto measure = [&](uint32_t a, uint32_t b, int i, int j) {
+        const Box2& ba = boxes[a];
+        const Box2& bb = boxes[b];
+        const double overlap_lo_x = std::max(ba.lo[0], bb.lo[0]);
+        const double overlap_lo_y = std::max(ba.lo[1], bb.lo[1]);
+        if (overlap_lo_x > std::min(ba.hi[0], bb.hi[0]) || overlap_lo_y > std::min(ba.hi[1], bb.hi[1])) return;
+        if (cell_of(overlap_lo_x, 0) != i || cell_of(overlap_lo_y, 1) != j) return;
+        if (dot(shell.normal[a], axis) * dot(shell.normal[b], axis) < 0) return;
+        const double shared = intersection_area(projected[a], projected[b]);
+        if (shared <= tiny) return;
+        found.push_back({a, b, float(shared * area_scale)});
+    };
+    if (!change) {
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const size_t c = size_t(j) * nx + i;
+                for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x)
+                    for (uint32_t y = x + 1; y < cell_start[c + 1]; ++y) measure(cell_items[x], cell_items[y], i, j);
+            }
+    } else {
+        for (uint32_t a : change->triangles) {
+            if (!usable[a]) continue;
+            for (int j = cell_of(boxes[a].lo[1], 1); j <= cell_of(boxes[a].hi[1], 1); ++j)
+                for (int i = cell_of(boxes[a].lo[0], 0); i <= cell_of(boxes[a].hi[0], 0); ++i) {
+                    const size_t c = size_t(j) * nx + i;
+                    for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x) {
+                        const uint32_t b = cell_items[x];
+                        if (b != a && !(change->flag[b] && b < a)) measure(a, b, i, j);
+                    }
                 }
         }
+    }
+    // CSR: the kept pairs of unchanged triangles first, then the measured ones.
+    const auto kept = [&](uint32_t t, uint32_t k) {
+        return change && !change->flag[t] && !change->flag[change->previous.partner[k]];
+    };
     MoldabilityTerms::Overlaps result;
     result.offset.assign(n + 1, 0);
-    for (size_t t = 0; t < n; ++t) result.offset[t + 1] = result.offset[t] + uint32_t(found[t].size());
-    result.partner.reserve(result.offset.back());
-    result.area.reserve(result.offset.back());
-    for (size_t t = 0; t < n; ++t)
-        for (const auto& [partner, area] : found[t]) {
-            result.partner.push_back(partner);
-            result.area.push_back(area);
-        }
+    if (change)
+        for (uint32_t t = 0; t < n; ++t)
+            for (uint32_t k = change->previous.offset[t]; k < change->previous.offset[t + 1]; ++k)
+                result.offset[t + 1] += kept(t, k);
+    for (const Pair& p : found) {
+        ++result.offset[p.a + 1];
+        ++result.offset[p.b + 1];
+    }
+    for (size_t t = 0; t < n; ++t) result.offset[t + 1] += result.offset[t];
+    result.partner.resize(result.offset.back());
+    result.area.resize(result.offset.back());
+    std::vector<uint32_t> next(result.offset.begin(), result.offset.end() - 1);
+    const auto add = [&](uint32_t t, uint32_t partner, float area) {
+        result.partner[next[t]] = partner;
+        result.area[next[t]++] = area;
+    };
+    if (change)
+        for (uint32_t t = 0; t < n; ++t)
+            for (uint32_t k = change->previous.offset[t]; k < change->previous.offset[t + 1]; ++k)
+                if (kept(t, k)) add(t, change->previous.partner[k], change->previous.area[k]);
+    for (const Pair& p : found) {
+        add(p.a, p.b, p.area);
+        add(p.b, p.a, p.area);
+    }
     return result;
 }
 
@@ -177,12 +247,31 @@ MoldabilityTerms compute_moldability_terms(const Shell& shell, double draft_radi
     std::atomic<size_t> done{0};
     tbb::parallel_for(size_t(0), terms.axes.size(), [&](size_t a) {
         if (progress.cancelled()) return;
-        terms.overlaps[a] = overlaps_along_axis(shell, terms.axes[a]);
+        terms.overlaps[a] = overlaps_along_axis(shell, terms.axes[a], nullptr);
         progress.update(double(++done) / terms.axes.size());
     });
     progress.check();
     for (const auto& o : terms.overlaps) terms.pair_count += o.partner.size() / 2;
     return terms;
+}
+
+void update_moldability_terms(const Shell& shell, const std::vector<uint32_t>& changed, const std::vector<int>& axes,
+                              MoldabilityTerms& terms) {
+    std::vector<char> is_changed(shell.triangle_count(), 0);
+    for (uint32_t t : changed) is_changed[t] = 1;
+    tbb::parallel_for(size_t(0), axes.size(), [&](size_t i) {
+        const int a = axes[i];
+        const Change change{changed, is_changed, terms.overlaps[a]};
+        terms.overlaps[a] = overlaps_along_axis(shell, terms.axes[a], &change);
+    });
+    terms.pair_count = 0;
+    for (const auto& o : terms.overlaps) terms.pair_count += o.partner.size() / 2;
+}
+
+double projected_overlap(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b, const Vec3& axis) {
+    const auto [u, v] = projection_basis(axis);
+    const auto facing = [&](const std::array<Vec3, 3>& t) { return dot(cross(t[1] - t[0], t[2] - t[0]), axis); };
+    return intersection_area(project_triangle(a, u, v, facing(a)), project_triangle(b, u, v, facing(b)));
 }
 
 }  // namespace fabvdb::surface

@@ -4,9 +4,12 @@
 //! alike) every pair of outer triangles whose projections along the axis
 //! overlap with (n₁·d)(n₂·d) ≥ 0, with the overlap area |p_d(t₁) ∩ p_d(t₂)|.
 //! Pairs are found with bounding-box early rejection on a 2-D grid and their
-//! areas by convex clipping; axes are processed in parallel (TBB).
+//! areas by convex clipping; axes are processed in parallel (TBB). After
+//! boundary smoothing moves vertices, the pairs of the moved triangles are
+//! measured again.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -36,6 +39,16 @@ struct MoldabilityTerms {
 
 //! Throws Error(CANCELLED) via `progress`.
 MoldabilityTerms compute_moldability_terms(const Shell& shell, double draft_radians, Progress& progress);
+
+//! Measures again, along the given axes (indices into terms.axes), the
+//! overlaps of the `changed` triangles (after their vertices moved); the
+//! other pairs are kept. Axes in parallel.
+void update_moldability_terms(const Shell& shell, const std::vector<uint32_t>& changed, const std::vector<int>& axes,
+                              MoldabilityTerms& terms);
+
+//! |p_d(a) ∩ p_d(b)| along `axis` for two triangles given by their corners
+//! (in the corners' units squared).
+double projected_overlap(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b, const Vec3& axis);
 
 //! U(t, d) of the thesis for a visible triangle of unit normal n and area `area`:
 //! −cos(min(θ + φ, π))·|p_d(t)| when θ = ∠(n, d) > π/2 − φ, else 0.

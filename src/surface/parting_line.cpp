@@ -3,7 +3,8 @@
 #include "surface/parting_line.h"
 
 #include <algorithm>
-#include <mutex>
+#include <memory>
+#include <tuple>
 #include <queue>
 
 // Boost.Graph's edge iterators trip GCC's -Wmaybe-uninitialized (false positive).
@@ -12,6 +13,7 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #pragma GCC diagnostic pop
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "surface/vec3_ops.h"
@@ -33,38 +35,60 @@ struct VertexData {
 };
 using FlowGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, VertexData, EdgeData>;
 
-void add_edge_pair(FlowGraph& g, size_t a, size_t b, double forward, double backward) {
-    const auto e = boost::add_edge(a, b, g).first;
-    const auto r = boost::add_edge(b, a, g).first;
-    g[e].capacity = forward;
-    g[r].capacity = backward;
-    g[e].reverse = r;
-    g[r].reverse = e;
-}
-
-std::vector<char> graph_cut(const PartSurface& s, const Vec3& d) {
-    const size_t n = s.size();
-    FlowGraph g(n + 2);
-    const size_t source = n, sink = n + 1;
-    for (size_t i = 0; i < n; ++i) {
-        const double facing = dot(s.normal[i], d);
-        const bool inner = s.kind[i] == PartSurface::inner;
-        add_edge_pair(g, source, i, inner ? 0.0 : 1.0 + facing, 0.0);
-        add_edge_pair(g, i, sink, inner ? 0.0 : 1.0 - facing, 0.0);
-        for (uint32_t j : s.adjacent[i])
-            if (j > i) {
-                const double w = std::max(0.0, dot(s.normal[i], s.normal[j]));
-                add_edge_pair(g, i, j, w, w);
-            }
+//! The flow network of one part surface. Its structure and the binary
+//! capacities do not depend on the direction, so one network serves every
+//! candidate: only the terminal capacities are set per direction.
+class CutNetwork {
+public:
+    explicit CutNetwork(const PartSurface& s) : s_(s), g_(s.size() + 2) {
+        const size_t n = s.size();
+        source_edge_.resize(n);
+        sink_edge_.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            source_edge_[i] = add_edge_pair(n, i, 0.0, 0.0);
+            sink_edge_[i] = add_edge_pair(i, n + 1, 0.0, 0.0);
+            for (uint32_t j : s.adjacent[i])
+                if (j > i) {
+                    const double w = std::max(0.0, dot(s.normal[i], s.normal[j]));
+                    add_edge_pair(i, j, w, w);
+                }
+        }
     }
-    boost::boykov_kolmogorov_max_flow(g, boost::get(&EdgeData::capacity, g), boost::get(&EdgeData::residual, g),
-                                      boost::get(&EdgeData::reverse, g), boost::get(&VertexData::predecessor, g),
-                                      boost::get(&VertexData::color, g), boost::get(&VertexData::distance, g),
-                                      boost::get(boost::vertex_index, g), source, sink);
-    std::vector<char> upper(n);
-    for (size_t i = 0; i < n; ++i) upper[i] = g[i].color != boost::white_color;
-    return upper;
-}
+
+    //! Per surface triangle: in M⁺ for direction d.
+    std::vector<char> labels(const Vec3& d) {
+        const size_t n = s_.size();
+        for (size_t i = 0; i < n; ++i) {
+            const double facing = dot(s_.normal[i], d);
+            const bool inner = s_.kind[i] == PartSurface::inner;
+            g_[source_edge_[i]].capacity = inner ? 0.0 : 1.0 + facing;
+            g_[sink_edge_[i]].capacity = inner ? 0.0 : 1.0 - facing;
+        }
+        boost::boykov_kolmogorov_max_flow(g_, boost::get(&EdgeData::capacity, g_), boost::get(&EdgeData::residual, g_),
+                                          boost::get(&EdgeData::reverse, g_),
+                                          boost::get(&VertexData::predecessor, g_), boost::get(&VertexData::color, g_),
+                                          boost::get(&VertexData::distance, g_), boost::get(boost::vertex_index, g_),
+                                          n, n + 1);
+        std::vector<char> upper(n);
+        for (size_t i = 0; i < n; ++i) upper[i] = g_[i].color != boost::white_color;
+        return upper;
+    }
+
+private:
+    Traits::edge_descriptor add_edge_pair(size_t a, size_t b, double forward, double backward) {
+        const auto e = boost::add_edge(a, b, g_).first;
+        const auto r = boost::add_edge(b, a, g_).first;
+        g_[e].capacity = forward;
+        g_[r].capacity = backward;
+        g_[e].reverse = r;
+        g_[r].reverse = e;
+        return e;
+    }
+
+    const PartSurface& s_;
+    FlowGraph g_;
+    std::vector<Traits::edge_descriptor> source_edge_, sink_edge_;
+};
 
 //! Makes the M⁺ and M⁻ labels each one connected component (§3.4.4).
 void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const PartSurface& s, const Vec3& d,
@@ -170,16 +194,61 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
     for (size_t i = 0; i < n; ++i) upper[i] = label[component[i]];
 }
 
+//! Labels (graph cut + fix-up) and energy of `surface` for one direction.
+std::pair<std::vector<char>, MoldabilityEnergy> label_part(const Shell& shell, const MoldabilityTerms& terms,
+                                                           const PartSurface& surface, CutNetwork& network,
+                                                           int direction, const MoldabilityWeights& weights) {
+    const Vec3& d = terms.directions.directions[direction];
+    std::vector<char> upper = network.labels(d);
+    connect_patches(shell, terms, surface, d, direction, upper);
+    const MoldabilityEnergy energy = moldability_energy(terms, surface, upper, direction, weights, nullptr);
+    return {std::move(upper), energy};
+}
+
 PartMolding molding_of(const Shell& shell, const MoldabilityTerms& terms, PartSurface surface, int direction,
                        const MoldabilityWeights& weights) {
     PartMolding molding;
+    CutNetwork network(surface);
+    std::tie(molding.upper, molding.energy) = label_part(shell, terms, surface, network, direction, weights);
     molding.direction = direction;
     molding.surface = std::move(surface);
-    const Vec3& d = terms.directions.directions[direction];
-    molding.upper = graph_cut(molding.surface, d);
-    connect_patches(shell, terms, molding.surface, d, direction, molding.upper);
-    molding.energy = moldability_energy(terms, molding.surface, molding.upper, direction, weights, nullptr);
     return molding;
+}
+
+//! One direction per axis (d and −d give the same mold with its halves
+//! swapped: mirrored unary costs, the same E_P), the `count` axes first whose
+//! estimate is lowest: E_P of the labelling M⁺ = {n·d ≥ 0} before the cut
+//! (each visible triangle's lesser overhang, plus every overlap of the part
+//! along the axis, since facing pairs then share a label).
+std::vector<int> ranked_candidates(const Shell& shell, const MoldabilityTerms& terms, const PartSurface& surface,
+                                   size_t count) {
+    std::vector<char> in_part(shell.triangle_count(), 0);
+    for (size_t i = 0; i < surface.size(); ++i)
+        if (surface.kind[i] == PartSurface::outer) in_part[surface.source[i]] = 1;
+    std::vector<std::pair<double, int>> estimate;
+    for (size_t d = 0; d < terms.directions.directions.size(); ++d) {
+        const int axis = terms.axis_of_direction[d];
+        const Vec3& dir = terms.directions.directions[d];
+        if (!(terms.axes[axis] == dir)) continue;
+        double e = 0;
+        for (size_t i = 0; i < surface.size(); ++i)
+            if (surface.kind[i] != PartSurface::inner)
+                e += std::min(overhang_term(surface.normal[i], surface.area[i], dir, terms.draft),
+                              overhang_term(surface.normal[i], surface.area[i], -1.0 * dir, terms.draft));
+        const auto& o = terms.overlaps[axis];
+        for (size_t i = 0; i < surface.size(); ++i) {
+            if (surface.kind[i] != PartSurface::outer) continue;
+            const uint32_t t = surface.source[i];
+            for (uint32_t k = o.offset[t]; k < o.offset[t + 1]; ++k)
+                if (in_part[o.partner[k]]) e += 0.5 * o.area[k];
+        }
+        estimate.emplace_back(e, int(d));
+    }
+    count = std::min(count, estimate.size());
+    std::partial_sort(estimate.begin(), estimate.begin() + count, estimate.end());
+    std::vector<int> ranked;
+    for (size_t i = 0; i < count; ++i) ranked.push_back(estimate[i].second);
+    return ranked;
 }
 
 }  // namespace
@@ -191,17 +260,20 @@ PartMolding parting_line(const Shell& shell, const MoldabilityTerms& terms, cons
 
 PartMolding best_parting_line(const Shell& shell, const MoldabilityTerms& terms,
                               const std::vector<int>& part_of_triangle, int part, const MoldabilityWeights& weights,
-                              Progress& progress) {
-    const PartSurface surface = part_surface(shell, part_of_triangle, part);
-    const size_t count = terms.directions.directions.size();
-    std::vector<double> energy(count, 1e300);
-    tbb::parallel_for(size_t(0), count, [&](size_t d) {
+                              Progress& progress, size_t candidates_checked) {
+    PartSurface surface = part_surface(shell, part_of_triangle, part);
+    const std::vector<int> candidates = ranked_candidates(shell, terms, surface, candidates_checked);
+    std::vector<double> energy(candidates.size(), 1e300);
+    tbb::enumerable_thread_specific<std::unique_ptr<CutNetwork>> networks;
+    tbb::parallel_for(size_t(0), candidates.size(), [&](size_t c) {
         if (progress.cancelled()) return;
-        energy[d] = molding_of(shell, terms, surface, int(d), weights).energy.total;
+        auto& network = networks.local();
+        if (!network) network = std::make_unique<CutNetwork>(surface);
+        energy[c] = label_part(shell, terms, surface, *network, candidates[c], weights).second.total;
     });
     progress.check();
-    const int best = int(std::min_element(energy.begin(), energy.end()) - energy.begin());
-    return molding_of(shell, terms, surface, best, weights);
+    const int best = candidates[size_t(std::min_element(energy.begin(), energy.end()) - energy.begin())];
+    return molding_of(shell, terms, std::move(surface), best, weights);
 }
 
 }  // namespace fabvdb::surface

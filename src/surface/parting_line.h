@@ -30,9 +30,12 @@ PartMolding parting_line(const Shell& shell, const MoldabilityTerms& terms, cons
                          int part, int direction, const MoldabilityWeights& weights);
 
 //! argmin_{d∈D} E_P(P, d) with the part fixed (used after cut and merge edits,
-//! §3.5): the parting line for every candidate direction, in parallel.
+//! §3.5). d and −d give the same E_P, so the 81 axes are ranked by the E_P
+//! of the labelling M⁺ = {n·d ≥ 0} (cheap: precomputed terms only) and the
+//! parting line (graph cut, fix-up, energy) is computed, in parallel, for the
+//! `candidates_checked` best ranked (81: all of them, the exact argmin).
 PartMolding best_parting_line(const Shell& shell, const MoldabilityTerms& terms,
                               const std::vector<int>& part_of_triangle, int part, const MoldabilityWeights& weights,
-                              Progress& progress);
+                              Progress& progress, size_t candidates_checked = 12);
 
 }  // namespace fabvdb::surface

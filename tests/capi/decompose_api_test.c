@@ -32,7 +32,8 @@ int main(void) {
     CHECK(options.struct_size == sizeof options);
     CHECK(options.gamma == 0.05 && options.draft_degrees == 1.0 && options.w_overhang == 1.0 &&
           options.w_overlap == 1.0 && options.w_coarse_overlap == 1e6 && options.parts == 0 &&
-          options.low_res_triangles == 10000 && options.shell_thickness == 0.0);
+          options.low_res_triangles == 10000 && options.shell_thickness == 0.0 &&
+          options.smoothing_iterations == 10 && options.w_smooth == 1.0);
     fabvdb_decompose_options_init(NULL);
 
     fabvdb_ctx* ctx = NULL;
@@ -50,6 +51,13 @@ int main(void) {
     CHECK(fabvdb_mesh_decompose(ctx, mesh, &options, NULL, out_dir, &report) == FABVDB_ERR_INVALID_ARGUMENT);
     CHECK(report == (fabvdb_report*)&options && strlen(fabvdb_last_error(ctx)) > 0);
     CHECK(fabvdb_mesh_decompose(ctx, mesh, NULL, NULL, NULL, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    fabvdb_decompose_options_init(&options);
+    options.smoothing_iterations = -1;
+    CHECK(fabvdb_mesh_decompose(ctx, mesh, &options, NULL, out_dir, &report) == FABVDB_ERR_INVALID_ARGUMENT);
+    fabvdb_decompose_options_init(&options);
+    options.w_smooth = -0.5;
+    CHECK(fabvdb_mesh_decompose(ctx, mesh, &options, NULL, out_dir, &report) == FABVDB_ERR_INVALID_ARGUMENT);
+    CHECK(report == (fabvdb_report*)&options);
     fabvdb_decompose_options_init(&options);
     options.low_res_triangles = 1200;
 

@@ -1,6 +1,6 @@
 # decompose_test.sh — `fabvdb decompose`: a run writes the three files and the
 # report; edits from a file are applied (a merge of the two parts of the torus
-# leaves one part); bad options exit 1 and a bad edits file exits 2, both
+# leaves one part; a smoothing stroke across the boundary is recorded); bad options exit 1 and a bad edits file exits 2, both
 # without creating the output folder; `fabvdb info` reads decomposition.ply.
 source "$(dirname "$0")/lib.sh"
 
@@ -22,6 +22,15 @@ expect_exit 0 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/merged" --low-re
 expect_match "$STDOUT" '^1 parts'
 expect_match "$(cat "$WORK/m.json")" '"type": "merge"'
 
+# A smoothing stroke on the boundary (the y = 0 plane, where the two parts meet) is applied and recorded.
+cat > "$WORK/smooth.json" <<'JSON'
+{"edits": [{"type": "smooth", "points": [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0]], "radius": 0.6}]}
+JSON
+expect_exit 0 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/smoothed" --low-res 1200 --smoothing 0 \
+  --edits "$WORK/smooth.json" --report "$WORK/s.json" --quiet
+expect_match "$STDOUT" '^2 parts'
+expect_match "$(cat "$WORK/s.json")" '"type": "smooth"'
+
 cat > "$WORK/bad.json" <<'JSON'
 {"edits": [{"type": "cut", "points": [[0, 0, 0]]}]}
 JSON
@@ -30,5 +39,6 @@ expect_match "$STDERR" 'at least two points'
 expect_no_file "$WORK/bad"
 expect_exit 1 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/bad" --parts two
 expect_exit 1 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/bad" --gamma -1
+expect_exit 1 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/bad" --smoothing -1
 expect_no_file "$WORK/bad"
 finish

@@ -1,21 +1,21 @@
 // Mold decomposition acceptance on the shared sphere and torus: the output
-// folder is read back and checked with code of its own (adjacency from the
-// written triangles, breadth-first connectivity, the overhang term evaluated
-// from the written surface), never with numbers the decomposition reported
-// about itself alone.
+// folder is read back and checked with code of its own
+// (support/decomposition_checks.h: adjacency from the written triangles,
+// connectivity, the overhang term evaluated from the written surface, the
+// boundary length and turning), never with numbers the decomposition
+// reported about itself alone. Boundary smoothing is compared with the same
+// decomposition left unsmoothed.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "io/mesh_io.h"
 #include "surface/decompose.h"
 #include "surface/decomposition_io.h"
+#include "support/decomposition_checks.h"
 
 namespace {
 
@@ -28,7 +28,7 @@ struct Written {
     std::vector<Vec3> corners;  // outer vertices, then inner vertices
 };
 
-Written run_and_read(const std::string& mesh_name, const std::string& folder) {
+Written run_and_read(const std::string& mesh_name, const std::string& folder, int smoothing_iterations = 10) {
     fabvdb::Progress progress;
     const Mesh input = fabvdb::io::read_mesh(std::string(FABVDB_SHARED_DATA "/meshes/") + mesh_name, progress);
     fabvdb::surface::DecomposeSettings settings;
@@ -36,98 +36,21 @@ Written run_and_read(const std::string& mesh_name, const std::string& folder) {
     const fabvdb::BoundingBox box = fabvdb::bounding_box(input);
     settings.shell.thickness =
         0.03 * std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
+    settings.decomposition.smoothing_iterations = smoothing_iterations;
     const auto result = fabvdb::surface::decompose_mesh(input, settings, {}, progress);
     fabvdb::surface::write_decomposition(folder, input, result.shell, result.terms, result.decomposition,
                                          settings.decomposition);
     Written w;
-    std::ifstream in(folder + "/decomposition.json");
-    in >> w.doc;
+    w.doc = fabvdb::test::read_decomposition(folder + "/decomposition.json");
     for (const auto& v : w.doc["low_res_surface"]["vertices"]) w.corners.push_back(v.get<Vec3>());
     for (const auto& v : w.doc["low_res_surface"]["inner_vertices"]) w.corners.push_back(v.get<Vec3>());
     return w;
 }
 
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 crs(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 double dt(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-//! Number of connected pieces of `triangles` (corner triples) joined across shared edges.
-size_t pieces(const std::vector<std::array<uint32_t, 3>>& triangles) {
-    std::map<std::pair<uint32_t, uint32_t>, std::vector<size_t>> by_edge;
-    for (size_t i = 0; i < triangles.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-            by_edge[std::minmax(triangles[i][k], triangles[i][(k + 1) % 3])].push_back(i);
-    std::vector<int> seen(triangles.size(), 0);
-    size_t count = 0;
-    for (size_t s = 0; s < triangles.size(); ++s) {
-        if (seen[s]) continue;
-        ++count;
-        std::vector<size_t> stack{s};
-        seen[s] = 1;
-        while (!stack.empty()) {
-            const size_t i = stack.back();
-            stack.pop_back();
-            for (int k = 0; k < 3; ++k)
-                for (size_t j : by_edge[std::minmax(triangles[i][k], triangles[i][(k + 1) % 3])])
-                    if (!seen[j]) {
-                        seen[j] = 1;
-                        stack.push_back(j);
-                    }
-        }
-    }
-    return count;
-}
-
-//! The checks every decomposition must pass; returns the part areas (mm²).
-std::vector<double> check_decomposition(const Written& w) {
-    const json& doc = w.doc;
-    const auto all = doc["low_res_surface"]["triangles"].get<std::vector<std::array<uint32_t, 3>>>();
-    std::vector<int> owner(all.size(), -1);
-    std::vector<double> areas;
-    const double s = doc["unit_scale"];
-    const double draft = double(doc["draft_degrees"]) * M_PI / 180.0;
-    for (const json& part : doc["parts"]) {
-        const int id = part["id"];
-        std::vector<std::array<uint32_t, 3>> prisms;
-        double area = 0;
-        for (uint32_t t : part["prisms"].get<std::vector<uint32_t>>()) {
-            EXPECT_EQ(owner[t], -1) << "triangle " << t << " in two parts";
-            owner[t] = id;
-            prisms.push_back(all[t]);
-            const Vec3 c = crs(sub(w.corners[all[t][1]], w.corners[all[t][0]]),
-                               sub(w.corners[all[t][2]], w.corners[all[t][0]]));
-            area += 0.5 * std::sqrt(dt(c, c));
-        }
-        areas.push_back(area);
-        EXPECT_EQ(pieces(prisms), 1u) << "part " << id << " is not connected";
-        // M⁺ and M⁻ each one connected piece; overhang recomputed from the written surface.
-        const auto surface = part["surface"]["triangles"].get<std::vector<std::array<uint32_t, 3>>>();
-        const auto upper = part["surface"]["upper"].get<std::vector<int>>();
-        const auto kind = part["surface"]["kind"].get<std::vector<int>>();
-        std::vector<std::array<uint32_t, 3>> top, bottom;
-        const Vec3 d = part["parting_direction"].get<Vec3>();
-        double overhang = 0;
-        for (size_t i = 0; i < surface.size(); ++i) {
-            (upper[i] ? top : bottom).push_back(surface[i]);
-            if (kind[i] == 1) continue;  // inner triangles are invisible
-            const auto& f = surface[i];
-            const Vec3 c = crs(sub(w.corners[f[1]], w.corners[f[0]]), sub(w.corners[f[2]], w.corners[f[0]]));
-            const double twice = std::sqrt(dt(c, c));
-            if (twice == 0) continue;
-            const double facing = dt(c, d) / twice * (upper[i] ? 1 : -1);
-            const double theta = std::acos(std::max(-1.0, std::min(1.0, facing)));
-            if (theta > M_PI / 2 - draft)
-                overhang += -std::cos(std::min(theta + draft, M_PI)) * 0.5 * twice * s * s * std::abs(facing);
-        }
-        EXPECT_LE(pieces(top), 1u) << "M+ of part " << id;
-        EXPECT_LE(pieces(bottom), 1u) << "M- of part " << id;
-        EXPECT_NEAR(overhang, double(part["overhang_energy"]), 1e-9 + 1e-6 * overhang) << "part " << id;
-    }
-    for (size_t t = 0; t < owner.size(); ++t) EXPECT_GE(owner[t], 0) << "triangle " << t << " in no part";
-    return areas;
-}
+std::vector<double> check_decomposition(const Written& w) { return fabvdb::test::check_decomposition(w.doc); }
 
 TEST(Decompose, SphereSplitsInTwoHalvesNearAGreatCircle) {
     const std::string folder = std::filesystem::temp_directory_path() / "fabvdb_decompose_sphere";
@@ -169,6 +92,46 @@ TEST(Decompose, TorusSplitsInTwoMoldableParts) {
     EXPECT_TRUE(std::filesystem::is_regular_file(folder + "/decomposition.ply"));
     EXPECT_TRUE(std::filesystem::is_regular_file(folder + "/deformation.ply"));
     std::filesystem::remove_all(folder);
+}
+
+TEST(Decompose, SmoothingStraightensBoundariesKeepingPartsAndEnergy) {
+    const std::string rough_folder = std::filesystem::temp_directory_path() / "fabvdb_decompose_torus_rough";
+    const std::string smooth_folder = std::filesystem::temp_directory_path() / "fabvdb_decompose_torus_smooth";
+    const Written rough = run_and_read("torus.obj", rough_folder, 0);
+    const Written smooth = run_and_read("torus.obj", smooth_folder, 10);
+    ASSERT_EQ(rough.doc["parts"].size(), smooth.doc["parts"].size());
+    check_decomposition(smooth);
+    EXPECT_EQ(rough.doc["part_of_triangle"], smooth.doc["part_of_triangle"]);
+    const fabvdb::test::BoundaryMeasure before = fabvdb::test::measure_boundaries(rough.doc);
+    const fabvdb::test::BoundaryMeasure after = fabvdb::test::measure_boundaries(smooth.doc);
+    ASSERT_GT(before.vertices, 10u);
+    EXPECT_LT(after.turning, 0.8 * before.turning) << "turning " << before.turning << " -> " << after.turning;
+    EXPECT_LT(after.length, before.length) << "length " << before.length << " -> " << after.length;
+    const double gamma = smooth.doc["gamma"];
+    EXPECT_LT(double(smooth.doc["total_moldability_energy"]), gamma);
+    // Moved vertices stay on the surface: every smoothed vertex is within a
+    // small fraction of the shell thickness of the unsmoothed S_low (centroid
+    // distance bound: the nearest written triangle's plane, within its circumradius).
+    const auto faces = rough.doc["low_res_surface"]["triangles"].get<std::vector<std::array<uint32_t, 3>>>();
+    const double omega = smooth.doc["shell_thickness"];
+    const size_t v_count = rough.doc["low_res_surface"]["vertices"].size();
+    for (size_t v = 0; v < v_count; ++v) {
+        const Vec3& p = smooth.corners[v];
+        double nearest = 1e300;
+        for (const auto& f : faces) {
+            const Vec3 a = rough.corners[f[0]], b = rough.corners[f[1]], c = rough.corners[f[2]];
+            const Vec3 ab = sub(b, a), ac = sub(c, a);
+            const Vec3 n{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+            const Vec3 centre{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
+            const double reach = std::sqrt(std::max({dt(sub(a, centre), sub(a, centre)), dt(sub(b, centre), sub(b, centre)),
+                                                     dt(sub(c, centre), sub(c, centre))}));
+            if (dt(sub(p, centre), sub(p, centre)) > reach * reach * 1.0001) continue;
+            nearest = std::min(nearest, std::abs(dt(sub(p, a), n)) / std::sqrt(dt(n, n)));
+        }
+        EXPECT_LT(nearest, 1e-6 * omega + 1e-9) << "vertex " << v << " left the surface";
+    }
+    std::filesystem::remove_all(rough_folder);
+    std::filesystem::remove_all(smooth_folder);
 }
 
 }  // namespace

@@ -1,12 +1,14 @@
 // Edits of a mold decomposition on the shared sphere (thesis §3.5): a closed
 // cut adds a part, a merge removes one, a no-cut stroke across a boundary
-// moves the boundary out of the stroke, and parts an edit does not touch keep
-// exactly their triangles and direction. Triangle sets are compared as sets;
+// moves the boundary out of the stroke, a smooth stroke straightens the
+// boundary under it and moves no vertex outside it, and parts an edit does
+// not touch keep exactly their triangles, direction and energy. Triangle sets are compared as sets;
 // the stroke and cap regions are measured geometrically in the test.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "core/error.h"
@@ -32,6 +34,7 @@ const Sphere& sphere() {
         DecomposeSettings settings;
         settings.shell.target_triangles = 1500;
         settings.shell.thickness = 0.06;
+        settings.decomposition.smoothing_iterations = 0;  // rough boundaries for the smooth edit
         Sphere made;
         made.result = decompose_mesh(input, settings, {}, progress);
         const auto& v = made.result.shell.outer.vertices;
@@ -84,13 +87,14 @@ Edit cap_cut(const Sphere& s, const Vec3& axis, double angle) {
 
 TEST(DecompositionEdits, CutAddsAPartAndMergeRemovesItTouchingNothingElse) {
     const Sphere& s = sphere();
-    const Shell& shell = s.result.shell;
+    Shell shell = s.result.shell;
+    MoldabilityTerms terms = s.result.terms;
     ASSERT_EQ(s.result.decomposition.parts.size(), 2u);
     Progress progress;
     Decomposition d = s.result.decomposition;
     const auto before = parts_of(d);
     const Vec3 axis = axis_of(s, d, 0);
-    apply_edit(shell, s.result.terms, {}, cap_cut(s, axis, 0.6), 0, d, progress);
+    apply_edit(shell, terms, {}, cap_cut(s, axis, 0.6), 0, d, progress);
     ASSERT_EQ(d.parts.size(), 3u);
     const auto after_cut = parts_of(d);
     // Part 1 of the automatic result is untouched.
@@ -100,6 +104,10 @@ TEST(DecompositionEdits, CutAddsAPartAndMergeRemovesItTouchingNothingElse) {
                                       s.result.decomposition.part_of_triangle.begin()));
     });
     EXPECT_TRUE(after_cut.count(untouched));
+    for (const PartMolding& p : d.parts)
+        if (p.direction == s.result.decomposition.parts[1].direction &&
+            p.surface.size() == s.result.decomposition.parts[1].surface.size())
+            EXPECT_EQ(p.energy.total, s.result.decomposition.parts[1].energy.total);
     // The new cap holds the triangles well inside the loop and none well outside.
     const int cap = d.part_of_triangle[std::max_element(shell.normal.begin(), shell.normal.end(),
                                                         [&](const Vec3& a, const Vec3& b) {
@@ -115,7 +123,7 @@ TEST(DecompositionEdits, CutAddsAPartAndMergeRemovesItTouchingNothingElse) {
     Edit merge;
     merge.type = Edit::merge;
     merge.points = {s.centre + s.radius * axis, on_sphere(s, axis, side, 1.0)};
-    apply_edit(shell, s.result.terms, {}, merge, 1, d, progress);
+    apply_edit(shell, terms, {}, merge, 1, d, progress);
     ASSERT_EQ(d.parts.size(), 2u);
     const auto after_merge = parts_of(d);
     EXPECT_TRUE(after_merge.count(untouched));
@@ -128,11 +136,12 @@ TEST(DecompositionEdits, CutAddsAPartAndMergeRemovesItTouchingNothingElse) {
 
 TEST(DecompositionEdits, NoCutStrokeMovesTheBoundaryOutOfItAndKeepsOtherParts) {
     const Sphere& s = sphere();
-    const Shell& shell = s.result.shell;
+    Shell shell = s.result.shell;
+    MoldabilityTerms terms = s.result.terms;
     Progress progress;
     Decomposition d = s.result.decomposition;
     const Vec3 axis = axis_of(s, d, 0);
-    apply_edit(shell, s.result.terms, {}, cap_cut(s, axis, 0.5), 0, d, progress);
+    apply_edit(shell, terms, {}, cap_cut(s, axis, 0.5), 0, d, progress);
     ASSERT_EQ(d.parts.size(), 3u);
     const auto before = parts_of(d);
     // A stroke across the boundary between part 0's remainder and part 1, on a meridian.
@@ -151,7 +160,7 @@ TEST(DecompositionEdits, NoCutStrokeMovesTheBoundaryOutOfItAndKeepsOtherParts) {
                 break;
             }
     ASSERT_EQ(parts_under.size(), 2u) << "the stroke must cross a boundary";
-    const nlohmann::json record = apply_edit(shell, s.result.terms, {}, stroke, 0, d, progress);
+    const nlohmann::json record = apply_edit(shell, terms, {}, stroke, 0, d, progress);
     std::set<int> parts_after;
     for (uint32_t t : brushed) parts_after.insert(d.part_of_triangle[t]);
     EXPECT_EQ(parts_after.size(), 1u);
@@ -165,6 +174,8 @@ TEST(DecompositionEdits, NoCutStrokeMovesTheBoundaryOutOfItAndKeepsOtherParts) {
 
 TEST(DecompositionEdits, EditsThatDoNotApplyAreRefused) {
     const Sphere& s = sphere();
+    Shell shell = s.result.shell;
+    MoldabilityTerms terms = s.result.terms;
     Progress progress;
     Decomposition d = s.result.decomposition;
     const Vec3 axis = axis_of(s, d, 0);
@@ -172,7 +183,7 @@ TEST(DecompositionEdits, EditsThatDoNotApplyAreRefused) {
     merge.type = Edit::merge;
     merge.points = {s.centre + s.radius * axis, on_sphere(s, axis, normalized(cross(axis, Vec3{0, 0, 1})), 0.3)};
     try {
-        apply_edit(s.result.shell, s.result.terms, {}, merge, 0, d, progress);
+        apply_edit(shell, terms, {}, merge, 0, d, progress);
         FAIL() << "a merge within one part was accepted";
     } catch (const Error& e) {
         EXPECT_EQ(e.status(), FABVDB_ERR_BAD_INPUT);
@@ -180,7 +191,112 @@ TEST(DecompositionEdits, EditsThatDoNotApplyAreRefused) {
     Edit open_cut;
     open_cut.type = Edit::cut;
     open_cut.points = {s.centre + s.radius * axis, on_sphere(s, axis, normalized(cross(axis, Vec3{0, 0, 1})), 0.3)};
-    EXPECT_THROW(apply_edit(s.result.shell, s.result.terms, {}, open_cut, 0, d, progress), Error);
+    EXPECT_THROW(apply_edit(shell, terms, {}, open_cut, 0, d, progress), Error);
+    Edit far_smooth;
+    far_smooth.type = Edit::smooth;
+    far_smooth.radius = 0.05 * s.radius;
+    far_smooth.points = {s.centre + s.radius * axis};
+    try {
+        apply_edit(shell, terms, {}, far_smooth, 0, d, progress);
+        FAIL() << "a smoothing stroke away from every boundary was accepted";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_BAD_INPUT);
+    }
+}
+
+//! Sum, over boundary vertices with two boundary edges within `radius` of
+//! `centre`, of the angle by which the boundary bends there.
+double turning_near(const Shell& shell, const Decomposition& d, const Vec3& centre, double radius) {
+    std::map<uint32_t, std::set<uint32_t>> ends;
+    for (size_t t = 0; t < shell.triangle_count(); ++t) {
+        const Triangle& f = shell.outer.triangles[t];
+        for (int k = 0; k < 3; ++k)
+            if (d.part_of_triangle[shell.neighbor[t][k]] != d.part_of_triangle[t]) {
+                ends[f[k]].insert(f[(k + 1) % 3]);
+                ends[f[(k + 1) % 3]].insert(f[k]);
+            }
+    }
+    double turning = 0;
+    for (const auto& [v, others] : ends) {
+        const Vec3& x = shell.outer.vertices[v];
+        if (others.size() != 2 || norm(x - centre) > radius) continue;
+        const Vec3 a = shell.outer.vertices[*others.begin()] - x;
+        const Vec3 b = shell.outer.vertices[*others.rbegin()] - x;
+        turning += M_PI - std::acos(std::clamp(dot(a, b) / (norm(a) * norm(b)), -1.0, 1.0));
+    }
+    return turning;
+}
+
+TEST(DecompositionEdits, SmoothStrokeStraightensTheBoundaryUnderItOnly) {
+    const Sphere& s = sphere();
+    Shell shell = s.result.shell;
+    MoldabilityTerms terms = s.result.terms;
+    Progress progress;
+    Decomposition d = s.result.decomposition;
+    const Vec3 axis = axis_of(s, d, 0);
+    apply_edit(shell, terms, {}, cap_cut(s, axis, 0.5), 0, d, progress);
+    ASSERT_EQ(d.parts.size(), 3u);
+    // A stroke on the boundary between the two halves, far from the cap.
+    const Vec3 side = normalized(cross(axis, Vec3{0.3, 0.5, 0.8}));
+    Vec3 on_boundary{0, 0, 0};
+    double best = 1e300;
+    for (size_t t = 0; t < shell.triangle_count(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int a = d.part_of_triangle[t], b = d.part_of_triangle[shell.neighbor[t][k]];
+            const Vec3& x = shell.outer.vertices[shell.outer.triangles[t][k]];
+            if (a != b && norm(x - on_sphere(s, axis, side, M_PI / 2)) < best) {
+                best = norm(x - on_sphere(s, axis, side, M_PI / 2));
+                on_boundary = x;
+            }
+        }
+    Edit stroke;
+    stroke.type = Edit::smooth;
+    stroke.radius = 0.5 * s.radius;
+    stroke.points = {on_boundary};
+    const Shell shell_before = shell;
+    const Decomposition d_before = d;
+    const double turning_before = turning_near(shell, d, on_boundary, stroke.radius);
+    const nlohmann::json record = apply_edit(shell, terms, {}, stroke, 1, d, progress);
+    EXPECT_EQ(record["type"], "smooth");
+    EXPECT_LT(turning_near(shell, d, on_boundary, stroke.radius), 0.8 * turning_before);
+    EXPECT_EQ(d.part_of_triangle, d_before.part_of_triangle);
+    // Vertices outside the stroke stay; parts the stroke does not reach keep
+    // their direction, surface and energy.
+    std::set<int> reached;
+    for (size_t v = 0; v < shell.outer.vertices.size(); ++v)
+        if (shell.outer.vertices[v] != shell_before.outer.vertices[v]) {
+            EXPECT_LE(norm(shell_before.outer.vertices[v] - on_boundary), stroke.radius);
+            for (size_t t = 0; t < shell.triangle_count(); ++t)
+                for (uint32_t c : shell.outer.triangles[t])
+                    if (c == v) reached.insert(d.part_of_triangle[t]);
+        }
+    EXPECT_GE(reached.size(), 2u);
+    for (size_t p = 0; p < d.parts.size(); ++p) {
+        if (reached.count(int(p))) continue;
+        EXPECT_EQ(d.parts[p].direction, d_before.parts[p].direction);
+        EXPECT_EQ(d.parts[p].surface.corners, d_before.parts[p].surface.corners);
+        EXPECT_EQ(d.parts[p].energy.total, d_before.parts[p].energy.total);
+    }
+    EXPECT_LT(d.total_energy(), DecompositionOptions{}.gamma);
+    // The overlap terms updated for the moved triangles equal a full recomputation.
+    const MoldabilityTerms fresh = compute_moldability_terms(shell, terms.draft, progress);
+    ASSERT_EQ(fresh.overlaps.size(), terms.overlaps.size());
+    for (size_t a = 0; a < fresh.overlaps.size(); ++a) {
+        std::map<std::pair<uint32_t, uint32_t>, double> expected, updated;
+        for (size_t t = 0; t + 1 < fresh.overlaps[a].offset.size(); ++t)
+            for (uint32_t k = fresh.overlaps[a].offset[t]; k < fresh.overlaps[a].offset[t + 1]; ++k)
+                expected[{uint32_t(t), fresh.overlaps[a].partner[k]}] = fresh.overlaps[a].area[k];
+        for (size_t t = 0; t + 1 < terms.overlaps[a].offset.size(); ++t)
+            for (uint32_t k = terms.overlaps[a].offset[t]; k < terms.overlaps[a].offset[t + 1]; ++k)
+                updated[{uint32_t(t), terms.overlaps[a].partner[k]}] = terms.overlaps[a].area[k];
+        for (const auto& [pair, area] : expected) {
+            const auto it = updated.find(pair);
+            const double got = it == updated.end() ? 0.0 : it->second;
+            EXPECT_NEAR(got, area, 1e-6 * area + 1e-12) << "axis " << a << " pair " << pair.first << "," << pair.second;
+        }
+        for (const auto& [pair, area] : updated)
+            if (!expected.count(pair)) EXPECT_LT(area, 1e-12) << "axis " << a << " extra pair";
+    }
 }
 
 }  // namespace
