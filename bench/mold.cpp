@@ -1,21 +1,27 @@
-// Per-stage timings of mold generation's building blocks on synthetic parts
-// of growing size: sweeping a standing ring into a double height field
-// (volume), and assembling the two-piece mold of a flat torus (parting
-// surface, features, exact booleans). Stage times come from the progress
-// callback. Usage: bench_mold [voxel_mm] [grid_step_mm]
+// The whole `fabvdb mold` chain per shared model scaled to 100 mm (longest
+// side): decomposition, input level set, detail restoration, sweeps, part
+// surfaces, mold assembly (parting surface, solids, booleans), distance to
+// the input; per-stage seconds from the progress callback, plus the figures a
+// maker checks (parts, added volume, distance ratios, triangles).
+// Usage: bench_mold [model ...] (default: bunny.off kitten.obj fertility.off)
+//        environment FABVDB_BENCH_VOXEL=mm to override the default voxel.
+#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <vector>
 
-#include <openvdb/tools/MeshToVolume.h>
+#include <openvdb/openvdb.h>
 
+#include "core/error.h"
 #include "core/progress.h"
-#include "surface/mold_assembly.h"
-#include "volume/extract_mesh.h"
-#include "volume/sweep.h"
+#include "io/mesh_io.h"
+#include "surface/decompose.h"
+#include "surface/decomposition_io.h"
+#include "surface/decomposition_parts.h"
+#include "surface/mold_generation.h"
 
 namespace {
 
@@ -36,73 +42,63 @@ struct StageTimer {
         return 0;
     }
     void finish() { callback(this, "", 1.0); }
-    void print(const char* what) const {
-        for (const auto& [name, s] : seconds) std::printf("  %-40s %8.3f s   (%s)\n", name.c_str(), s, what);
-    }
 };
-
-fabvdb::Mesh torus(double major, double minor, int segments_major, int segments_minor) {
-    fabvdb::Mesh mesh;
-    for (int i = 0; i < segments_major; ++i)
-        for (int j = 0; j < segments_minor; ++j) {
-            const double u = 2 * M_PI * i / segments_major, v = 2 * M_PI * j / segments_minor;
-            const double r = major + minor * std::cos(v);
-            mesh.vertices.push_back({r * std::cos(u), r * std::sin(u), minor * std::sin(v)});
-        }
-    auto index = [&](int i, int j) {
-        return uint32_t((i % segments_major) * segments_minor + (j % segments_minor));
-    };
-    for (int i = 0; i < segments_major; ++i)
-        for (int j = 0; j < segments_minor; ++j) {
-            mesh.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
-            mesh.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
-        }
-    return mesh;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
     openvdb::initialize();
-    const double voxel = argc > 1 ? std::atof(argv[1]) : 0.25;
-    const double grid_step = argc > 2 ? std::atof(argv[2]) : 1.25;
+    std::vector<std::string> models;
+    for (int i = 1; i < argc; ++i) models.push_back(argv[i]);
+    if (models.empty()) models = {"bunny.off", "kitten.obj", "fertility.off"};
+    const char* voxel = std::getenv("FABVDB_BENCH_VOXEL");
+    for (const std::string& name : models) {
+        try {
+            StageTimer timer;
+            fabvdb::Progress progress(&StageTimer::callback, &timer, nullptr);
+            const auto start = Clock::now();
+            fabvdb::Mesh input = fabvdb::io::read_mesh(std::string(FABVDB_SHARED_DATA "/meshes/") + name, progress);
+            const fabvdb::BoundingBox box = fabvdb::bounding_box(input);
+            const double longest =
+                std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
+            for (fabvdb::Vec3& p : input.vertices) p = {p[0] * 100 / longest, p[1] * 100 / longest, p[2] * 100 / longest};
 
-    for (int scale : {1, 2}) {
-        const double major = 20.0 * scale, minor = 6.0 * scale;
-        fabvdb::Mesh ring = torus(major, minor, 96 * scale, 32 * scale);
-        for (auto& p : ring.vertices) p = {p[0], -p[2], p[1]};  // standing: not moldable along z
-        std::vector<openvdb::Vec3s> points;
-        std::vector<openvdb::Vec3I> triangles;
-        for (const auto& p : ring.vertices) points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
-        for (const auto& t : ring.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-        auto transform = openvdb::math::Transform::createLinearTransform(voxel);
-        auto level_set = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles, 3.0f);
+            fabvdb::surface::DecomposeSettings settings;
+            settings.shell.thickness = 3.0;
+            const auto decomposition = fabvdb::surface::decompose_mesh(input, settings, {}, progress);
+            const auto document = fabvdb::surface::decomposition_document(
+                decomposition.shell, decomposition.terms, decomposition.decomposition, settings.decomposition);
+            const auto model = fabvdb::surface::decomposed_parts(document, name, input);
+            const double decompose_seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
-        StageTimer timer;
-        fabvdb::Progress progress(&StageTimer::callback, &timer, nullptr);
-        fabvdb::volume::SweepStats stats;
-        auto swept = fabvdb::volume::sweep_double_height_field(*level_set, {0.3, -0.2, 1.0}, {}, {}, progress, &stats);
-        const fabvdb::Mesh part = fabvdb::volume::extract_mesh(*swept, 0.0, progress);
-        timer.finish();
-        std::printf("standing ring R=%.0f r=%.0f mm, voxel %.2f mm: %zu active voxels, volume %.0f -> %.0f mm^3, "
-                    "%zu triangles\n",
-                    major, minor, voxel, size_t(level_set->activeVoxelCount()), stats.volume_before,
-                    stats.volume_after, part.triangles.size());
-        timer.print("sweep");
+            fabvdb::surface::MoldGenerationOptions options;
+            if (voxel) options.voxel_size = std::atof(voxel);
+            const auto molds = fabvdb::surface::generate_molds(input, model, options, progress);
+            timer.finish();
+            const double total = std::chrono::duration<double>(Clock::now() - start).count();
 
-        const fabvdb::Mesh flat = torus(major, minor, 96 * scale, 32 * scale);
-        StageTimer mold_timer;
-        fabvdb::Progress mold_progress(&StageTimer::callback, &mold_timer, nullptr);
-        fabvdb::surface::MoldOptions options;
-        options.margin = 10.0;
-        options.grid_step = grid_step;
-        const auto start = Clock::now();
-        const auto mold = fabvdb::surface::assemble_mold(flat, {0, 0, 1}, options, mold_progress);
-        mold_timer.finish();
-        std::printf("flat torus mold (%zu part triangles, grid %.2f mm): top %zu, bottom %zu triangles, %.2f s\n",
-                    flat.triangles.size(), grid_step, mold.top.triangles.size(), mold.bottom.triangles.size(),
-                    std::chrono::duration<double>(Clock::now() - start).count());
-        mold_timer.print("mold");
+            size_t part_triangles = 0, mold_triangles = 0;
+            double added = 0, restored = 0;
+            for (const auto& part : molds.parts) {
+                part_triangles += part.part.triangles.size();
+                mold_triangles += part.mold.top.triangles.size() + part.mold.bottom.triangles.size();
+                added += part.added_volume;
+                restored += part.restored_volume;
+            }
+            std::printf("%s (100 mm, %zu triangles): %zu parts, voxel %.3f mm, added volume %.1f%%, "
+                        "distance to the input mean %.4f%% max %.3f%% of the diagonal, part triangles %zu, "
+                        "mold triangles %zu; decomposition %.1f s, total %.1f s\n",
+                        name.c_str(), input.triangles.size(), molds.parts.size(), molds.voxel_size,
+                        100 * added / restored, 100 * molds.mean_distance / molds.diagonal,
+                        100 * molds.max_distance / molds.diagonal, part_triangles, mold_triangles, decompose_seconds,
+                        total);
+            for (const auto& [stage, seconds] : molds.seconds)
+                std::printf("  mold stage %-28s %8.2f s\n", stage.c_str(), seconds);
+            for (const auto& [stage, seconds] : timer.seconds)
+                if (seconds >= 0.05) std::printf("  progress stage %-40s %8.2f s\n", stage.c_str(), seconds);
+        } catch (const fabvdb::Error& e) {
+            std::printf("%s: failed: %s\n", name.c_str(), e.what());
+        }
     }
     return 0;
 }

@@ -297,6 +297,12 @@ typedef struct fabvdb_hollow_options {
                                  Default 0. */
     double adaptivity;        /* [0, 1] simplification of the cavity surface; default 0 */
     double min_cavity_volume; /* mm^3: voids smaller than this are filled; default 0 */
+    double infill_cell;       /* mm; > 0 adds a gyroid strut lattice in the cavity: struts along the
+                                 skeleton of one gyroid labyrinth (the srs net: 8 nodes, 12 struts per
+                                 cubic cell of this side), unioned with the shell, joined to the wall,
+                                 the void around them one open-cell region. Default 0: no infill. */
+    double infill_strut;      /* mm, strut diameter, in (0, infill_cell/4] when infill_cell > 0;
+                                 default 1.2. The automatic voxel is then at most strut / 4. */
 } fabvdb_hollow_options;
 
 /* Fills *options with the defaults above and sets struct_size. NULL does
@@ -319,9 +325,12 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  *   volume_solid, volume_shell, material_saved_fraction, cavity_count,
  *   cavities [{volume}], filled_cavities [{volume}], min_wall_at_vertices,
  *   output_vertices, output_triangles, timings {stage: seconds, total}.
+ *   With infill: infill {pattern, cell, strut}; the cavity vertices are then
+ *   at least (not exactly) the wall from the outer surface.
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle, wall <= 0,
  * closing < 0, voxel larger than the wall, adaptivity outside [0, 1], a wall
- * that leaves no cavity because the part is nowhere thicker than 2*wall);
+ * that leaves no cavity because the part is nowhere thicker than 2*wall,
+ * infill_cell < 0, an infill strut <= 0 or over infill_cell / 4);
  * FABVDB_ERR_BAD_INPUT (a mesh that encloses no volume); FABVDB_ERR_OUT_OF_BUDGET
  * (the voxel size needs more memory than the context's budget; the message
  * names a voxel size that fits); FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY.
@@ -514,6 +523,76 @@ FABVDB_API void fabvdb_decompose_options_init(fabvdb_decompose_options* options)
 FABVDB_API fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
                                                const fabvdb_decompose_options* opts, const char* edits_path,
                                                const char* out_dir, fabvdb_report** out_report);
+
+/* ------------------------------------------------------------------------- */
+/* Molds (fabvdb mold)                                                        */
+/* ------------------------------------------------------------------------- */
+/* Bits of fabvdb_mold_options.flags. (since 0.1) */
+/* One mold pair for all the parts, side by side in a row (each turned so its
+ * parting direction is the row's), with a gate per part on one runner and
+ * sprue, instead of a mold pair per part. */
+#define FABVDB_MOLD_COMMON 1u
+
+/* Parameters of mold generation. Fill with fabvdb_mold_options_init().
+ * (since 0.1) */
+typedef struct fabvdb_mold_options {
+    size_t struct_size;  /* sizeof(fabvdb_mold_options), set by _init */
+    unsigned flags;      /* FABVDB_MOLD_* bits; default 0 */
+    double margin;       /* mold block margin around each part, mm, > 0; default 10 */
+    double voxel_size;   /* level-set voxel, mm, >= 0; 0 (default): the bounding-box diagonal / 250 */
+    double grid_step;    /* parting-surface grid step, mm, >= 0; 0 (default): margin / 8 */
+    double density;      /* casting material, g/cm^3, > 0, for the weights; default 1.1 (polyurethane resin) */
+} fabvdb_mold_options;
+
+/* Fills *options with the defaults above and sets struct_size. NULL does
+ * nothing. Thread-safe. (since 0.1) */
+FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
+
+/* Turns each part of a mold decomposition of `mesh` into a cast-ready part and
+ * a two-piece rigid mold (thesis section 3.6): the part's outer surface
+ * restored from the full-resolution mesh, the part swept into a double height
+ * field along its parting direction (the added volume kept out of the other
+ * parts), then a block split by a smooth RBF parting surface through the
+ * parting line, with a gate at the parting line's lowest point (when the
+ * mold stands for pouring), a runner and a sprue to the block's top, vents, and registration pins and holes, made by
+ * exact CGAL booleans. The ARAP deformation of section 3.6.2 is not in this
+ * version: overhangs are removed by adding material only.
+ * mesh: borrowed; the model the decomposition was made for.
+ * decomposition_path: a decomposition.json written by fabvdb_mesh_decompose
+ *   for this mesh at this scale, or NULL to run the decomposition first with
+ *   decompose_opts (NULL: its defaults); its files then go to
+ *   out_dir/decomposition/.
+ * opts: NULL for the defaults.
+ * out_dir: folder that receives parts/part_NN.stl (the cast parts) and
+ *   molds/part_NN_top.stl, molds/part_NN_bottom.stl (NN = the part id, two
+ *   digits or more), or with FABVDB_MOLD_COMMON molds/common_top.stl and
+ *   molds/common_bottom.stl; built beside it and renamed into place at the
+ *   end (an existing folder of that name is replaced), so a failed or
+ *   cancelled call leaves no partial folder.
+ * out_report: NULL, or receives a report (owned by the caller): voxel_size,
+ *   margin, density, diagonal, part_count, parts [{id, file, top_file,
+ *   bottom_file, parting_direction, volume (mm^3), weight (g),
+ *   restored_volume, added_volume, added_volume_ratio, removed_by_keep_out,
+ *   mean_distance_ratio, hausdorff_ratio, mold {size [e1, up, d] mm, center,
+ *   up, gates, vents} or, with FABVDB_MOLD_COMMON, common_mold_offset}],
+ *   common_mold {top_file, bottom_file, size, gates, vents} (row
+ *   coordinates: a part's point p is at R p + common_mold_offset, R the
+ *   rotation taking its parting direction to +Z), mean_distance_ratio and
+ *   hausdorff_ratio (distances from the input's vertices to the nearest part
+ *   surface over the bounding-box diagonal), seconds {stage: seconds}, and decomposition (the
+ *   decomposition's report, when it ran) or decomposition_file.
+ * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL mesh or out_dir, an
+ * option out of range, struct_size too small); FABVDB_ERR_BAD_INPUT (a
+ * decomposition file that is malformed, misses parts or belongs to another
+ * model or scale: the message names the file and the defect; a part that
+ * cannot be molded); FABVDB_ERR_IO; FABVDB_ERR_OUT_OF_BUDGET;
+ * FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY. The report is untouched on
+ * failure. Reports progress. A context is used by one thread at a time.
+ * (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const char* decomposition_path,
+                                          const fabvdb_decompose_options* decompose_opts,
+                                          const fabvdb_mold_options* opts, const char* out_dir,
+                                          fabvdb_report** out_report);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,7 @@
 extern const cli_command cmd_info;
 extern const cli_command cmd_hollow;
 extern const cli_command cmd_decompose;
+extern const cli_command cmd_mold;
 extern const cli_command cmd_repair;
 extern const cli_command cmd_batch;
 extern const cli_command cmd_drain;

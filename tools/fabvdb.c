@@ -13,6 +13,7 @@ static const cli_command* const commands[] = {
     &cmd_drain,
     &cmd_powder_sim,
     &cmd_decompose,
+    &cmd_mold,
     &cmd_batch,
 };
 static const size_t command_count = sizeof(commands) / sizeof(commands[0]);

@@ -67,13 +67,12 @@ Mesh box_mesh(const Vec3& lo, const Vec3& hi) {
     return box;
 }
 
-}  // namespace
-
-MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOptions& options, Progress& progress) {
+// The mold around `local` (one part, or parts side by side along X, in the
+// frame where d is +Z), in that frame; `parting_lines` one per part.
+MoldPair assemble_in_frame(const Mesh& local, const std::vector<std::vector<Vec3>>& parting_lines,
+                           const MoldOptions& options, Progress& progress) {
     if (!(options.margin > 0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the mold margin must be > 0");
     progress.stage("mold: parting surface");
-    const volume::AlignedFrame frame = volume::aligned_frame(direction);
-    const Mesh local = volume::rotate_mesh(part, frame, false);
     const BoundingBox box = bounding_box(local);
     const double margin = options.margin;
     const double step = options.grid_step > 0 ? options.grid_step : margin / 8;
@@ -94,14 +93,25 @@ MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOption
     grid.step = step;
     grid.nx = block_cells[0] + 2;
     grid.ny = block_cells[1] + 2;
-    const std::vector<Vec3> parting_line = silhouette(local);
+    std::vector<Vec3> parting_line;
+    for (const auto& line : parting_lines) parting_line.insert(parting_line.end(), line.begin(), line.end());
     interpolate_parting_surface(parting_line, block_lo[2] + margin / 4, block_hi[2] - margin / 4, {}, grid);
-    // Raised by a hundredth of a step: a surface that contains parting-line
-    // edges exactly (a flat line, a flat surface) gives the booleans points a
-    // rounding error apart, which would round to crossing triangles.
-    for (double& z : grid.z) z += 1e-2 * step;
+    // Over every cell the parting line crosses, the surface stays a quarter
+    // step above each of the line's points in it (a cell's heights are
+    // interpolated from its corners, so raising the corners suffices). A
+    // surface through the line or a hair beside it would give the booleans
+    // points a rounding error apart, and needle triangles there that cross
+    // after rounding; instead the bottom piece gets a clean lip of that
+    // height along the parting line.
+    const double lip = 0.25 * step;
+    for (const Vec3& p : parting_line) {
+        const int i = std::clamp(int(std::floor((p[0] - grid.x0) / step)), 0, grid.nx - 1);
+        const int j = std::clamp(int(std::floor((p[1] - grid.y0) / step)), 0, grid.ny - 1);
+        for (int dj = 0; dj < 2; ++dj)
+            for (int di = 0; di < 2; ++di) grid.at(i + di, j + dj) = std::max(grid.at(i + di, j + dj), p[2] + lip);
+    }
     const MoldFeatureSizes sizes = mold_feature_sizes(margin);
-    const MoldFeatures features = place_mold_features(parting_line, grid, block_lo, block_hi, box.min, box.max, sizes);
+    const MoldFeatures features = place_mold_features(parting_lines, grid, block_lo, block_hi, box.min, box.max, sizes);
     progress.check();
 
     progress.stage("mold: solids");
@@ -128,7 +138,7 @@ MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOption
             const size_t v = size_t(j) * size_t(grid.nx + 1) + size_t(i);
             channel_lo[v] = grid.z[v] - sizes.runner_half_width;
             channel_hi[v] = grid.z[v] + sizes.runner_half_width;
-            double z_lo, z_hi;
+            double z_lo = 0, z_hi = 0;
             if (grid.x(i) >= box.min[0] && grid.x(i) <= box.max[0] && grid.y(j) >= box.min[1] &&
                 grid.y(j) <= box.max[1] && column_extent(local, grid.x(i), grid.y(j), z_lo, z_hi)) {
                 channel_lo[v] = std::min(channel_lo[v], z_lo - sizes.runner_half_width);
@@ -158,16 +168,56 @@ MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOption
                             progress);
 
     MoldPair pair;
-    pair.top = volume::rotate_mesh(top, frame, true);
-    pair.bottom = volume::rotate_mesh(bottom, frame, true);
-    pair.channels = volume::rotate_mesh(channels, frame, true);
+    pair.top = std::move(top);
+    pair.bottom = std::move(bottom);
+    pair.channels = channels;
     pair.block_size = {block_hi[0] - block_lo[0], block_hi[1] - block_lo[1], block_hi[2] - block_lo[2]};
-    pair.block_center = frame.to_world({0.5 * (block_lo[0] + block_hi[0]), 0.5 * (block_lo[1] + block_hi[1]),
-                                        0.5 * (block_lo[2] + block_hi[2])});
-    pair.gate = frame.to_world(features.gate);
-    for (const Vec3& v : features.vents) pair.vents.push_back(frame.to_world(v));
+    pair.block_center = {0.5 * (block_lo[0] + block_hi[0]), 0.5 * (block_lo[1] + block_hi[1]),
+                         0.5 * (block_lo[2] + block_hi[2])};
+    pair.gates = features.gates;
+    pair.vents = features.vents;
+    pair.up = {0, 1, 0};
+    return pair;
+}
+
+}  // namespace
+
+MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOptions& options, Progress& progress) {
+    const volume::AlignedFrame frame = volume::aligned_frame(direction);
+    const Mesh local = volume::rotate_mesh(part, frame, false);
+    MoldPair pair = assemble_in_frame(local, {silhouette(local)}, options, progress);
+    pair.top = volume::rotate_mesh(pair.top, frame, true);
+    pair.bottom = volume::rotate_mesh(pair.bottom, frame, true);
+    pair.channels = volume::rotate_mesh(pair.channels, frame, true);
+    pair.block_center = frame.to_world(pair.block_center);
+    for (Vec3& gate : pair.gates) gate = frame.to_world(gate);
+    for (Vec3& vent : pair.vents) vent = frame.to_world(vent);
     pair.up = frame.e2;
     return pair;
+}
+
+MoldPair assemble_common_mold(const std::vector<Mesh>& parts, const std::vector<Vec3>& directions,
+                              const MoldOptions& options, Progress& progress, std::vector<Vec3>& offsets) {
+    if (parts.empty() || parts.size() != directions.size())
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "a common mold needs one direction per part");
+    Mesh row;
+    std::vector<std::vector<Vec3>> parting_lines;
+    offsets.clear();
+    double next_x = 0;
+    for (size_t p = 0; p < parts.size(); ++p) {
+        Mesh local = volume::rotate_mesh(parts[p], volume::aligned_frame(directions[p]), false);
+        const BoundingBox box = bounding_box(local);
+        // A margin between neighbours, bottoms on one line, mid-heights level.
+        const Vec3 offset{next_x - box.min[0], -box.min[1], -0.5 * (box.min[2] + box.max[2])};
+        next_x += box.max[0] - box.min[0] + options.margin;
+        for (Vec3& v : local.vertices) v = {v[0] + offset[0], v[1] + offset[1], v[2] + offset[2]};
+        offsets.push_back(offset);
+        parting_lines.push_back(silhouette(local));
+        const uint32_t base = uint32_t(row.vertices.size());
+        row.vertices.insert(row.vertices.end(), local.vertices.begin(), local.vertices.end());
+        for (const Triangle& t : local.triangles) row.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+    return assemble_in_frame(row, parting_lines, options, progress);
 }
 
 }  // namespace fabvdb::surface

@@ -1,7 +1,9 @@
 //! A two-piece mold for one moldable part (thesis §3.6.3): in the frame where
 //! the parting direction d is +Z, a block with `margin` around the part is
 //! split by the RBF parting surface through the part's silhouette (its
-//! parting line) and the pieces are
+//! parting line; kept a quarter grid step above the line, which leaves a
+//! lip of that height on the bottom piece instead of needle triangles) and
+//! the pieces are
 //!   bottom = ((B⁻ ∪ SV↓ ∪ pins) ∖ SV↑ ∖ channels) ∩ slab,
 //!   top    = ((B⁺ ∪ SV↑) ∖ SV↓ ∖ channels ∖ key holes) ∩ slab,
 //! B∓ the block below/above the parting surface, SV↑ the part swept up to the
@@ -35,12 +37,20 @@ struct MoldPair {
     Mesh channels;     //!< runner, sprue and vents as one solid (world), for volume accounting
     std::array<double, 3> block_size{0, 0, 0};  //!< along e1, e2 (up when pouring) and d
     Vec3 block_center{0, 0, 0};                  //!< world
-    Vec3 gate{0, 0, 0};                          //!< world
+    std::vector<Vec3> gates;                     //!< world, one per part
     std::vector<Vec3> vents;                     //!< world
     Vec3 up{0, 0, 0};                            //!< world direction that is up when pouring
 };
 
 //! `part`: closed, 2-manifold, world coordinates. `direction`: d.
 MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOptions& options, Progress& progress);
+
+//! One mold for several parts (`--common-mold`): each part turned so its
+//! direction is +Z (its aligned_frame) and moved by offsets[p] into a row
+//! along X, a margin apart, with one gate per part on a shared runner and
+//! sprue. "World" in the MoldPair means these row coordinates: a part's point
+//! p is at aligned_frame(directions[p]).to_frame(p) + offsets[p].
+MoldPair assemble_common_mold(const std::vector<Mesh>& parts, const std::vector<Vec3>& directions,
+                              const MoldOptions& options, Progress& progress, std::vector<Vec3>& offsets);
 
 }  // namespace fabvdb::surface

@@ -69,23 +69,35 @@ Mesh vertical_prism(double center_x, double center_y, double radius, double z0, 
     return prism;
 }
 
-MoldFeatures place_mold_features(const std::vector<Vec3>& parting_line, const HeightGrid& surface,
+MoldFeatures place_mold_features(const std::vector<std::vector<Vec3>>& parting_lines, const HeightGrid& surface,
                                  const Vec3& block_lo, const Vec3& block_hi, const Vec3& part_lo,
                                  const Vec3& part_hi, const MoldFeatureSizes& sizes) {
+    std::vector<Vec3> parting_line;
+    for (const auto& line : parting_lines) {
+        if (line.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "a part has no parting line");
+        parting_line.insert(parting_line.end(), line.begin(), line.end());
+    }
     if (parting_line.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the part has no parting line");
     MoldFeatures features;
     features.channel_cells.assign(size_t(surface.nx) * size_t(surface.ny), 0);
     const double exit_y = surface.y(surface.ny);
 
-    // Gate at the lowest point; runner down and around the part's right side,
-    // then up as the sprue through the top face.
-    features.gate = *std::min_element(parting_line.begin(), parting_line.end(),
-                                      [](const Vec3& a, const Vec3& b) { return a[1] < b[1]; });
+    // A gate at each part's lowest point, a runner straight down from it
+    // (nothing else is below a part in a row along X), one runner along
+    // below all the parts to their right, then up as the sprue through the
+    // top face.
     const double runner_y = part_lo[1] - sizes.runner_clearance;
     const double sprue_x = part_hi[0] + sizes.runner_clearance;
     const double w = sizes.runner_half_width;
-    mark_segment(surface, features.gate[0], features.gate[1], features.gate[0], runner_y, w, features.channel_cells);
-    mark_segment(surface, features.gate[0], runner_y, sprue_x, runner_y, w, features.channel_cells);
+    double runner_start = sprue_x;
+    for (const auto& line : parting_lines) {
+        const Vec3 gate = *std::min_element(line.begin(), line.end(),
+                                            [](const Vec3& a, const Vec3& b) { return a[1] < b[1]; });
+        features.gates.push_back(gate);
+        mark_segment(surface, gate[0], gate[1], gate[0], runner_y, w, features.channel_cells);
+        runner_start = std::min(runner_start, gate[0]);
+    }
+    mark_segment(surface, runner_start, runner_y, sprue_x, runner_y, w, features.channel_cells);
     mark_segment(surface, sprue_x, runner_y, sprue_x, exit_y, w, features.channel_cells);
 
     // Vents: points higher than every other parting-line point within the

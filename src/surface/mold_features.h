@@ -1,9 +1,10 @@
-//! The functional features of a two-piece mold around one part (thesis
-//! §3.6.3), in the frame where the parting direction is +Z and +Y is up when
-//! the mold stands for pouring: a gate at the lowest point of the parting
-//! line, a runner from it around the part to a sprue that leaves the block's
-//! top (+Y) face, vents from the highest and locally highest points of the
-//! parting line to the same face, and registration keys (pins on the bottom
+//! The functional features of a two-piece mold around one part, or several
+//! parts side by side along X (thesis §3.6.3), in the frame where the
+//! parting direction is +Z and +Y is up when the mold stands for pouring: a
+//! gate at the lowest point of each part's parting line, runners from them
+//! down below the parts and along to one sprue that leaves the block's top
+//! (+Y) face, vents from the highest and locally highest points of the
+//! parting lines to the same face, and registration keys (pins on the bottom
 //! piece, holes with clearance in the top) near the block's corners. Channels
 //! are grid cells along the parting surface; keys are closed prisms. Sizes
 //! scale with the block margin. Pure function.
@@ -30,7 +31,7 @@ struct MoldFeatureSizes {
 MoldFeatureSizes mold_feature_sizes(double margin);
 
 struct MoldFeatures {
-    Vec3 gate{0, 0, 0};
+    std::vector<Vec3> gates;  //!< one per parting line
     std::vector<Vec3> vents;
     std::vector<char> channel_cells;  //!< runner, sprue and vents, over the grid's cells
     std::vector<std::array<double, 2>> key_centers;
@@ -38,10 +39,11 @@ struct MoldFeatures {
     Mesh holes;  //!< closed prisms to subtract from the top piece
 };
 
-//! `parting_line`: points on it (frame coordinates); `surface`: the parting
-//! surface over a grid that extends one cell beyond the block on every side;
-//! `block_lo/hi`: the block; `part_lo/hi`: the part's bounding box.
-MoldFeatures place_mold_features(const std::vector<Vec3>& parting_line, const HeightGrid& surface,
+//! `parting_lines`: points on each part's parting line (frame coordinates),
+//! the parts side by side along X; `surface`: the parting surface over a grid
+//! that extends one cell beyond the block on every side; `block_lo/hi`: the
+//! block; `part_lo/hi`: the bounding box of all the parts.
+MoldFeatures place_mold_features(const std::vector<std::vector<Vec3>>& parting_lines, const HeightGrid& surface,
                                  const Vec3& block_lo, const Vec3& block_hi, const Vec3& part_lo,
                                  const Vec3& part_hi, const MoldFeatureSizes& sizes);
 

@@ -1,0 +1,153 @@
+//! Mold generation for a decomposed model (see mold_generation.h).
+#include "surface/mold_generation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "surface/surface_distance.h"
+#include "volume/detail_restoration.h"
+#include "volume/double_height_field_mesh.h"
+#include "volume/signed_distance.h"
+#include "volume/sweep.h"
+
+namespace fabvdb::surface {
+
+namespace {
+
+class StageClock {
+public:
+    explicit StageClock(std::map<std::string, double>& seconds) : seconds_(seconds) {}
+    void lap(const char* stage) {
+        const auto now = std::chrono::steady_clock::now();
+        seconds_[stage] += std::chrono::duration<double>(now - since_).count();
+        since_ = now;
+    }
+
+private:
+    std::map<std::string, double>& seconds_;
+    std::chrono::steady_clock::time_point since_ = std::chrono::steady_clock::now();
+};
+
+Mesh merged(const std::vector<CastPart>& parts, std::vector<size_t>& part_of_triangle) {
+    Mesh all;
+    for (size_t p = 0; p < parts.size(); ++p) {
+        const uint32_t base = uint32_t(all.vertices.size());
+        all.vertices.insert(all.vertices.end(), parts[p].part.vertices.begin(), parts[p].part.vertices.end());
+        for (const Triangle& t : parts[p].part.triangles) {
+            all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+            part_of_triangle.push_back(p);
+        }
+    }
+    return all;
+}
+
+//! Distances from the input's vertices to the nearest part surface, overall
+//! and per part (the part each vertex is nearest to).
+void measure_distances(const Mesh& input, MoldGeneration& result, Progress& progress) {
+    progress.stage("mold: distance to the input");
+    std::vector<size_t> part_of_triangle;
+    const SurfaceDistance parts(merged(result.parts, part_of_triangle));
+    std::vector<double> sum(result.parts.size(), 0.0);
+    std::vector<size_t> count(result.parts.size(), 0);
+    std::vector<char> used(input.vertices.size(), 0);
+    for (const Triangle& t : input.triangles)
+        for (uint32_t v : t) used[v] = 1;
+    double total = 0;
+    size_t samples = 0;
+    for (size_t v = 0; v < input.vertices.size(); ++v) {
+        if (!used[v]) continue;
+        const SurfaceDistance::Nearest nearest = parts.nearest(input.vertices[v]);
+        const size_t p = part_of_triangle[nearest.triangle];
+        sum[p] += nearest.distance;
+        ++count[p];
+        result.parts[p].max_distance = std::max(result.parts[p].max_distance, nearest.distance);
+        result.max_distance = std::max(result.max_distance, nearest.distance);
+        total += nearest.distance;
+        ++samples;
+        if (samples % 4096 == 0) progress.update(double(v) / double(input.vertices.size()));
+    }
+    result.mean_distance = samples ? total / double(samples) : 0.0;
+    for (size_t p = 0; p < result.parts.size(); ++p)
+        result.parts[p].mean_distance = count[p] ? sum[p] / double(count[p]) : 0.0;
+}
+
+}  // namespace
+
+MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, const MoldGenerationOptions& options,
+                              Progress& progress) {
+    if (model.parts.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the decomposition has no parts");
+    if (!(options.voxel_size >= 0) || !std::isfinite(options.voxel_size))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the voxel size must be >= 0");
+    MoldGeneration result;
+    result.diagonal = bounding_box(input).diagonal();
+    result.voxel_size = options.voxel_size > 0 ? options.voxel_size : result.diagonal / 250.0;
+    StageClock clock(result.seconds);
+
+    // The input's band reaches below the shell, so the inner surface at depth
+    // ω is in it.
+    volume::SignedDistanceOptions distance;
+    distance.voxel_size = result.voxel_size;
+    distance.half_band_voxels = int(std::ceil(model.shell_thickness / result.voxel_size)) + 3;
+    distance.memory_budget_bytes = options.memory_budget_bytes;
+    distance.input_name = options.input_name;
+    const openvdb::FloatGrid::Ptr input_grid = volume::signed_distance_from_mesh(input, distance, progress);
+    clock.lap("input level set");
+
+    std::vector<Mesh> solids;
+    for (const DecomposedPart& part : model.parts) solids.push_back(part.solid);
+    volume::DetailRestorationOptions restoration;
+    restoration.shell_thickness = model.shell_thickness;
+    restoration.reach = model.shell_thickness;
+    std::vector<openvdb::FloatGrid::Ptr> restored =
+        volume::restore_part_details(*input_grid, solids, restoration, progress);
+    clock.lap("detail restoration");
+
+    // Parts in order; each keeps out of the parts made before it (as made)
+    // and of those still to come (as restored), so no two overlap.
+    std::vector<openvdb::FloatGrid::Ptr> made(model.parts.size());
+    volume::SweepOptions sweep_options;
+    sweep_options.memory_budget_bytes = options.memory_budget_bytes;
+    for (size_t p = 0; p < model.parts.size(); ++p) {
+        std::vector<openvdb::FloatGrid::ConstPtr> keep_out;
+        for (size_t q = 0; q < model.parts.size(); ++q)
+            if (q != p) keep_out.push_back(q < p ? made[q] : restored[q]);
+        volume::SweepStats stats;
+        made[p] = volume::sweep_double_height_field(*restored[p], model.parts[p].direction, keep_out, sweep_options,
+                                                    progress, &stats);
+        clock.lap("sweep");
+        CastPart cast;
+        cast.id = model.parts[p].id;
+        cast.direction = model.parts[p].direction;
+        cast.part = volume::double_height_field_mesh(*made[p], progress);
+        cast.restored_volume = stats.volume_before;
+        cast.volume = signed_volume(cast.part);
+        cast.added_volume = cast.volume - cast.restored_volume;
+        cast.removed_by_keep_out = stats.removed_by_keep_out;
+        clock.lap("part surface");
+        if (!options.common_mold) {
+            cast.mold = assemble_mold(cast.part, cast.direction, options.mold, progress);
+            clock.lap("mold assembly");
+        }
+        result.parts.push_back(std::move(cast));
+        progress.stage("mold: parts");
+        progress.update(double(p + 1) / double(model.parts.size()));
+    }
+    if (options.common_mold) {
+        std::vector<Mesh> parts;
+        std::vector<Vec3> directions, offsets;
+        for (const CastPart& cast : result.parts) {
+            parts.push_back(cast.part);
+            directions.push_back(cast.direction);
+        }
+        result.common_mold = assemble_common_mold(parts, directions, options.mold, progress, offsets);
+        for (size_t p = 0; p < offsets.size(); ++p) result.parts[p].common_mold_offset = offsets[p];
+        clock.lap("mold assembly");
+    }
+    measure_distances(input, result, progress);
+    clock.lap("distance to the input");
+    return result;
+}
+
+}  // namespace fabvdb::surface

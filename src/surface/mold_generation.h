@@ -1,0 +1,73 @@
+//! Mold generation for a decomposed model (thesis §3.6): for every part of
+//! the decomposition, in order,
+//!  1. detail restoration: its outer surface back from the full-resolution
+//!     input's level set (volume/detail_restoration.h);
+//!  2. moldability enforcement: the part swept into a double height field
+//!     along its parting direction, the added volume kept out of the other
+//!     parts (the parts already made and the restored ones still to come), and
+//!     meshed as an exact double height field (volume/sweep.h,
+//!     volume/double_height_field_mesh.h);
+//!  3. its two-piece mold: RBF parting surface, gate, runner, sprue, vents,
+//!     registration keys, CGAL booleans (mold_assembly.h); or, with
+//!     `common_mold`, one mold for all the parts side by side.
+//! Measures what each part added and how closely the parts reproduce the
+//! input (distance from the input's vertices to the nearest part surface).
+//! Cancellable between and inside stages; a cancelled run returns nothing.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+#include "surface/decomposition_parts.h"
+#include "surface/mold_assembly.h"
+
+namespace fabvdb::surface {
+
+struct MoldGenerationOptions {
+    //! Voxel of the level sets, mm; 0: the input's bounding-box diagonal / 250.
+    double voxel_size = 0.0;
+    //! Mold block margin and parting-surface grid step (mold_assembly.h).
+    MoldOptions mold;
+    //! One mold pair for all the parts in a row instead of one per part.
+    bool common_mold = false;
+    //! Refuse (Error(OUT_OF_BUDGET)) over this many bytes; 0: no limit.
+    uint64_t memory_budget_bytes = 0;
+    //! What the input is called in error messages.
+    std::string input_name = "input";
+};
+
+struct CastPart {
+    int id = 0;
+    Vec3 direction{0, 0, 1};
+    Mesh part;                    //!< closed, a double height field along direction
+    MoldPair mold;                //!< empty with common_mold
+    Vec3 common_mold_offset{0, 0, 0};  //!< with common_mold: see assemble_common_mold
+    double restored_volume = 0;   //!< mm³, after detail restoration
+    double volume = 0;            //!< mm³, of `part`
+    double added_volume = 0;      //!< volume − restored_volume: what moldability enforcement added
+    double removed_by_keep_out = 0;  //!< mm³ the sweep would have added inside other parts
+    double mean_distance = 0;     //!< mm, from the input vertices nearest to this part
+    double max_distance = 0;
+};
+
+struct MoldGeneration {
+    std::vector<CastPart> parts;
+    MoldPair common_mold;         //!< with common_mold, in row coordinates
+    double voxel_size = 0;
+    double diagonal = 0;          //!< of the input's bounding box, mm
+    double mean_distance = 0;     //!< mm, input vertices to the nearest part surface
+    double max_distance = 0;
+    std::map<std::string, double> seconds;  //!< per stage
+};
+
+//! `input`: the full-resolution model the decomposition was made for.
+//! Throws Error(INVALID_ARGUMENT) for options out of range, BAD_INPUT for a
+//! part that vanishes or cannot be molded, OUT_OF_BUDGET, CANCELLED.
+MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, const MoldGenerationOptions& options,
+                              Progress& progress);
+
+}  // namespace fabvdb::surface

@@ -1,0 +1,181 @@
+//! Exact double-height-field surface of a swept level set (see
+//! double_height_field_mesh.h).
+#include "volume/double_height_field_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <openvdb/tools/Dense.h>
+
+#include "core/error.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+//! One index column: where it is inside, and how near it comes when it is not.
+struct Column {
+    bool inside = false;
+    float lo = 0, hi = 0;    //!< index z of the inside run's ends
+    float minimum = 0;       //!< smallest value along the column
+    float at_minimum = 0;    //!< index z where it is smallest
+};
+
+//! Zero crossing between samples k and k + 1 (values of opposite sign).
+float crossing(const float* column, size_t k) {
+    const float a = column[k], b = column[k + 1];
+    return float(k) + a / (a - b);
+}
+
+Column scan_column(const float* column, size_t nz, float z0) {
+    Column c;
+    size_t best_start = 0, best_length = 0;
+    size_t k_min = 0;
+    for (size_t k = 0; k < nz;) {
+        if (column[k] < column[k_min]) k_min = k;
+        if (column[k] >= 0) {
+            ++k;
+            continue;
+        }
+        const size_t start = k;
+        while (k < nz && column[k] < 0) {
+            if (column[k] < column[k_min]) k_min = k;
+            ++k;
+        }
+        if (k - start > best_length) best_start = start, best_length = k - start;
+    }
+    c.minimum = column[k_min];
+    c.at_minimum = z0 + float(k_min);
+    // The box has an outside sample at each end, so a run never touches it.
+    if (best_length > 0 && best_start > 0 && best_start + best_length < nz) {
+        c.inside = true;
+        c.lo = z0 + crossing(column, best_start - 1);
+        c.hi = z0 + crossing(column, best_start + best_length - 1);
+    }
+    return c;
+}
+
+}  // namespace
+
+Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress) {
+    progress.stage("mold: part surface");
+    openvdb::CoordBBox box = swept.evalActiveVoxelBoundingBox();
+    if (box.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the swept part is empty");
+    box.expand(1);
+    const openvdb::Coord dim = box.dim();
+    const int nx = dim.x(), ny = dim.y();
+    const size_t nz = size_t(dim.z());
+    std::vector<Column> columns(size_t(nx) * size_t(ny));
+    {
+        openvdb::tools::Dense<float> dense(box);
+        openvdb::tools::copyToDense(swept, dense);
+        progress.check();
+        const float* data = dense.data();
+        for (size_t c = 0; c < columns.size(); ++c) columns[c] = scan_column(data + c * nz, nz, float(box.min().z()));
+    }
+    progress.update(0.5);
+    const auto column_at = [&](int i, int j) -> const Column& { return columns[size_t(i) * size_t(ny) + size_t(j)]; };
+
+    Mesh mesh;
+    const openvdb::math::Transform& transform = swept.transform();
+    const auto add_vertex = [&](double i, double j, double z) {
+        const openvdb::Vec3d p =
+            transform.indexToWorld(openvdb::Vec3d(i + box.min().x(), j + box.min().y(), z));
+        mesh.vertices.push_back({p[0], p[1], p[2]});
+        return uint32_t(mesh.vertices.size() - 1);
+    };
+    const uint32_t none = UINT32_MAX;
+    std::vector<uint32_t> top(columns.size(), none), bottom(columns.size(), none);
+    const auto column_vertices = [&](int i, int j) {
+        const size_t c = size_t(i) * size_t(ny) + size_t(j);
+        if (top[c] == none) {
+            top[c] = add_vertex(i, j, columns[c].hi);
+            bottom[c] = add_vertex(i, j, columns[c].lo);
+        }
+        return std::array<uint32_t, 2>{top[c], bottom[c]};
+    };
+    // Contour vertex on the grid edge from column (i, j) along x (axis 0) or y (axis 1).
+    std::vector<uint32_t> contour(2 * columns.size(), none);
+    const auto contour_vertex = [&](int i, int j, int axis) {
+        uint32_t& id = contour[2 * (size_t(i) * size_t(ny) + size_t(j)) + size_t(axis)];
+        if (id != none) return id;
+        const int i2 = i + (axis == 0), j2 = j + (axis == 1);
+        const Column &a = column_at(i, j), &b = column_at(i2, j2);
+        const Column& in = a.inside ? a : b;
+        const Column& out = a.inside ? b : a;
+        // Fraction from the inside column to the outside one, kept off the
+        // columns so no triangle degenerates.
+        const float t = std::clamp(in.minimum / (in.minimum - out.minimum), 0.05f, 0.95f);
+        const float z = std::clamp((1 - t) * 0.5f * (in.lo + in.hi) + t * out.at_minimum, in.lo, in.hi);
+        const double s = a.inside ? t : 1.0 - t;
+        id = add_vertex(i + s * (i2 - i), j + s * (j2 - j), z);
+        return id;
+    };
+
+    bool any_inside = false;
+    for (int i = 0; i + 1 < nx; ++i) {
+        if (progress.cancelled()) break;
+        for (int j = 0; j + 1 < ny; ++j) {
+            // Corners counter-clockwise seen from +d; edge k runs from corner k to k + 1.
+            const int ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
+            bool in[4];
+            int inside_count = 0;
+            for (int k = 0; k < 4; ++k) inside_count += in[k] = column_at(ci[k], cj[k]).inside;
+            if (inside_count == 0) continue;
+            any_inside = true;
+            const auto edge_vertex = [&](int k) {
+                const int a = k, b = (k + 1) % 4;
+                const int i0 = std::min(ci[a], ci[b]), j0 = std::min(cj[a], cj[b]);
+                return contour_vertex(i0, j0, ci[a] != ci[b] ? 0 : 1);
+            };
+            // A polygon corner: a column (lifted to its top and bottom) or a contour vertex.
+            struct Corner {
+                int i, j;
+                uint32_t contour;
+            };
+            const auto emit = [&](const std::vector<Corner>& polygon, size_t apex) {
+                const auto ids = [&](const Corner& c) {
+                    if (c.contour != none) return std::array<uint32_t, 2>{c.contour, c.contour};
+                    return column_vertices(c.i, c.j);
+                };
+                const size_t n = polygon.size();
+                const auto a = ids(polygon[apex]);
+                for (size_t s = 1; s + 1 < n; ++s) {
+                    const auto b = ids(polygon[(apex + s) % n]), c = ids(polygon[(apex + s + 1) % n]);
+                    mesh.triangles.push_back({a[0], b[0], c[0]});
+                    mesh.triangles.push_back({a[1], c[1], b[1]});
+                }
+            };
+            const bool saddle = inside_count == 2 && in[0] == in[2];
+            if (saddle) {
+                for (int k = 0; k < 4; ++k)
+                    if (in[k])
+                        emit({{ci[k], cj[k], none}, {0, 0, edge_vertex(k)}, {0, 0, edge_vertex((k + 3) % 4)}}, 0);
+                continue;
+            }
+            // Any inside corner sees the whole polygon; with three inside
+            // corners the one opposite the outside corner gives the fullest fan.
+            int apex_corner = 0;
+            while (!in[apex_corner]) ++apex_corner;
+            for (int k = 0; k < 4; ++k)
+                if (!in[k] && inside_count == 3) apex_corner = (k + 2) % 4;
+            std::vector<Corner> polygon;
+            size_t apex = 0;
+            for (int k = 0; k < 4; ++k) {
+                if (in[k]) {
+                    if (k == apex_corner) apex = polygon.size();
+                    polygon.push_back({ci[k], cj[k], none});
+                }
+                if (in[k] != in[(k + 1) % 4]) polygon.push_back({0, 0, edge_vertex(k)});
+            }
+            emit(polygon, apex);
+        }
+    }
+    progress.check();
+    if (!any_inside) throw Error(FABVDB_ERR_BAD_INPUT, "the swept part has no inside column");
+    return mesh;
+}
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,26 @@
+//! The surface of a swept level set (sweep.h) as a triangle mesh that is an
+//! exact double height field along the grid's index z axis (the parting
+//! direction d): every line parallel to d crosses it at most twice, by
+//! construction, which an iso-surface extractor does not promise. Each index
+//! column (i, j) gives the interval where it is inside (its longest inside
+//! run, the zero crossings linearly interpolated); the shadow of the part is
+//! the zero contour of the column minimum (a 2D distance to the shadow), found
+//! by marching squares with separated saddles; each marching-squares polygon
+//! is fanned from an inside column and lifted twice, to the column tops
+//! (facing +d) and to the column bottoms (facing −d), the two sheets sharing
+//! the contour vertices. The result is closed, 2-manifold, outward, without
+//! faces parallel to d, and in world coordinates. Cancellable.
+#pragma once
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+
+namespace fabvdb::volume {
+
+//! `swept`: a level set on a linear transform (sweep_double_height_field's
+//! result). Throws Error(BAD_INPUT) when no column is inside.
+Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress);
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,171 @@
+// Mold generation from a decomposition, end to end on a sphere decomposed in
+// two parts: every cast part and mold piece checked by the test support's own
+// ray casting, edge pairing and CGAL predicates (support/mold_checks.h), the
+// parts disjoint and reproducing the input (distances measured here by brute
+// force), and bad decompositions refused with a message naming the defect.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <openvdb/openvdb.h>
+
+#include "core/error.h"
+#include "support/mold_checks.h"
+#include "support/ray_cast.h"
+#include "support/shapes.h"
+#include "surface/decompose.h"
+#include "surface/decomposition_io.h"
+#include "surface/decomposition_parts.h"
+#include "surface/mold_generation.h"
+
+namespace {
+
+using fabvdb::Mesh;
+using fabvdb::Vec3;
+
+const double voxel = 0.7;  // mm, for a sphere of radius 20 mm
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// Distance from p to triangle abc: inside the prism over it, to its plane;
+// otherwise to the nearest edge.
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const auto segment = [&](const Vec3& s, const Vec3& e) {
+        const Vec3 d = sub(e, s);
+        const double t = std::clamp(dot(sub(p, s), d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
+        const Vec3 q{s[0] + t * d[0] - p[0], s[1] + t * d[1] - p[1], s[2] + t * d[2] - p[2]};
+        return std::sqrt(dot(q, q));
+    };
+    const Vec3 u = sub(b, a), v = sub(c, a);
+    const Vec3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double nn = dot(n, n);
+    if (nn > 0) {
+        const double height = dot(sub(p, a), n) / nn;
+        const Vec3 q{p[0] - height * n[0], p[1] - height * n[1], p[2] - height * n[2]};
+        const Vec3 w = sub(q, a);
+        const double uu = dot(u, u), uv = dot(u, v), vv = dot(v, v), wu = dot(w, u), wv = dot(w, v);
+        const double den = uv * uv - uu * vv;
+        const double s = (uv * wv - vv * wu) / den, t = (uv * wu - uu * wv) / den;
+        if (s >= 0 && t >= 0 && s + t <= 1) return std::abs(height) * std::sqrt(nn);
+    }
+    return std::min({segment(a, b), segment(b, c), segment(c, a)});
+}
+
+class MoldGeneration : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        openvdb::initialize();
+        input_ = new Mesh(fabvdb::test::make_sphere({1, 2, 3}, 20.0, 4));
+        fabvdb::Progress progress;
+        fabvdb::surface::DecomposeSettings settings;
+        settings.shell.target_triangles = 1500;
+        settings.shell.thickness = 3.0;
+        settings.decomposition.parts = 2;
+        const auto result = fabvdb::surface::decompose_mesh(*input_, settings, {}, progress);
+        document_ = new nlohmann::json(fabvdb::surface::decomposition_document(
+            result.shell, result.terms, result.decomposition, settings.decomposition));
+        const auto model = fabvdb::surface::decomposed_parts(*document_, "sphere.json", *input_);
+        fabvdb::surface::MoldGenerationOptions options;
+        options.voxel_size = voxel;
+        options.mold.margin = 6.0;
+        options.mold.grid_step = 1.5;
+        molds_ = new fabvdb::surface::MoldGeneration(fabvdb::surface::generate_molds(*input_, model, options, progress));
+    }
+    static void TearDownTestSuite() {
+        delete molds_;
+        delete document_;
+        delete input_;
+    }
+    static Mesh* input_;
+    static nlohmann::json* document_;
+    static fabvdb::surface::MoldGeneration* molds_;
+};
+Mesh* MoldGeneration::input_ = nullptr;
+nlohmann::json* MoldGeneration::document_ = nullptr;
+fabvdb::surface::MoldGeneration* MoldGeneration::molds_ = nullptr;
+
+TEST_F(MoldGeneration, EveryPartAndMoldPassesTheAcceptanceChecks) {
+    ASSERT_EQ(molds_->parts.size(), 2u);
+    for (const auto& cast : molds_->parts) {
+        SCOPED_TRACE("part " + std::to_string(cast.id));
+        EXPECT_TRUE(fabvdb::test::closed_two_manifold(cast.part));
+        EXPECT_FALSE(fabvdb::test::self_intersects(cast.part));
+        const auto lines = fabvdb::test::check_double_height_field(cast.part, cast.direction, 100);
+        EXPECT_GT(lines.lines, 2000u);
+        EXPECT_EQ(lines.lines_over_two, 0u) << "max crossings " << lines.max_crossings;
+        EXPECT_NEAR(fabvdb::test::mesh_volume(cast.part), cast.volume, 1e-6 * cast.volume);
+        fabvdb::test::check_two_piece_mold(cast.part, cast.direction,
+                                           {cast.mold.top, cast.mold.bottom, cast.mold.channels});
+    }
+}
+
+TEST_F(MoldGeneration, PartsAreDisjointAndReproduceTheInput) {
+    const Mesh &a = molds_->parts[0].part, &b = molds_->parts[1].part;
+    const double part_volume = fabvdb::test::mesh_volume(a) + fabvdb::test::mesh_volume(b);
+    EXPECT_LT(fabvdb::test::sampled_common_volume({&a, &b}, {-20, -19, -18}, {22, 23, 24}, 60), 0.01 * part_volume);
+    // The sphere's shell of 3 mm: outer minus inner sphere volume.
+    const double shell = 4.0 / 3.0 * M_PI * (std::pow(20.0, 3) - std::pow(17.0, 3));
+    EXPECT_NEAR(part_volume, shell, 0.08 * shell);
+
+    const double diagonal = fabvdb::bounding_box(*input_).diagonal();
+    double sum = 0, largest = 0;
+    for (const Vec3& p : input_->vertices) {
+        double nearest = 1e300;
+        for (const Mesh* part : {&a, &b})
+            for (const auto& t : part->triangles)
+                nearest = std::min(nearest, point_triangle_distance(p, part->vertices[t[0]], part->vertices[t[1]],
+                                                                    part->vertices[t[2]]));
+        sum += nearest;
+        largest = std::max(largest, nearest);
+    }
+    // At this coarse voxel (1% of the diagonal) the surface is within a
+    // fifth of a voxel on average and a voxel and a half at most.
+    const double mean = sum / double(input_->vertices.size());
+    EXPECT_LT(mean, 0.2 * voxel);
+    EXPECT_LT(largest, 1.5 * voxel);
+    EXPECT_NEAR(molds_->mean_distance, mean, 0.01 * diagonal);
+}
+
+void expect_refused(const nlohmann::json& document, const Mesh& input, const std::string& defect) {
+    try {
+        fabvdb::surface::decomposed_parts(document, "d.json", input);
+        FAIL() << "expected a bad-input error about " << defect;
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_BAD_INPUT);
+        EXPECT_NE(std::string(e.what()).find("d.json"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(defect), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(MoldGeneration, BadDecompositionsAreRefused) {
+    expect_refused(*document_, fabvdb::test::make_torus({1, 2, 3}, 14, 6, 48, 24), "does not belong");
+    Mesh scaled = *input_;
+    for (Vec3& p : scaled.vertices) p = {2 * p[0], 2 * p[1], 2 * p[2]};
+    expect_refused(*document_, scaled, "does not belong");
+    nlohmann::json missing = *document_;
+    missing["parts"].erase(1);
+    expect_refused(missing, *input_, "missing");
+    nlohmann::json malformed = *document_;
+    malformed["parts"][0]["surface"]["triangles"][0] = "three corners";
+    expect_refused(malformed, *input_, "malformed");
+    nlohmann::json open = *document_;
+    open["parts"][0]["surface"]["triangles"].erase(0);
+    expect_refused(open, *input_, "not closed");
+    expect_refused(nlohmann::json{{"format", "something else"}}, *input_, "not a fabvdb decomposition");
+}
+
+TEST_F(MoldGeneration, CancelledGenerationThrowsCancelled) {
+    std::atomic<bool> cancel{true};
+    fabvdb::Progress progress(nullptr, nullptr, &cancel);
+    const auto model = fabvdb::surface::decomposed_parts(*document_, "sphere.json", *input_);
+    try {
+        fabvdb::surface::generate_molds(*input_, model, {}, progress);
+        FAIL() << "expected cancellation";
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
+    }
+}
+
+}  // namespace
