@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 const cli_option cli_common_options[] = {
@@ -343,6 +344,37 @@ static int set_value(cli_run* run, int index, const char* text, int given) {
     return 0;
 }
 
+/* Every file or directory a run writes (-o, --report, --heatmap, --save-job)
+ * must go into an existing, writable directory. Checked before any work, so
+ * that a typo in one path does not fail the run after another output was
+ * written. Returns 0, or the exit code after printing the path and why. */
+static int check_output_directories(const cli_run* run) {
+    static const char* const outputs[] = {"--output", "--report", "--heatmap", "--save-job"};
+    for (size_t i = 0; i < sizeof outputs / sizeof outputs[0]; ++i) {
+        if (find_option(run->command, outputs[i], strlen(outputs[i]), 0) < 0) continue;
+        const cli_value* value = cli_get(run, outputs[i]);
+        if (!value->set) continue;
+        char directory[4096];
+        const char* slash = strrchr(value->text, '/');
+        size_t length = slash ? (size_t)(slash - value->text) : 1;
+        if (length == 0) length = 1; /* a file in / */
+        if (length >= sizeof directory) length = sizeof directory - 1;
+        memcpy(directory, slash ? value->text : ".", length);
+        directory[length] = 0;
+        struct stat info;
+        const char* problem = NULL;
+        if (stat(directory, &info) != 0) problem = "does not exist";
+        else if (!S_ISDIR(info.st_mode)) problem = "is not a directory";
+        else if (access(directory, W_OK | X_OK) != 0) problem = "is not writable";
+        if (problem) {
+            fprintf(stderr, "fabvdb %s: input/output error: %s %s: directory %s %s\n", run->command->name,
+                    outputs[i], value->text, directory, problem);
+            return cli_exit_code(FABVDB_ERR_IO);
+        }
+    }
+    return 0;
+}
+
 int cli_main(const cli_command* command, int argc, char** argv) {
     cli_run run;
     memset(&run, 0, sizeof run);
@@ -400,6 +432,8 @@ int cli_main(const cli_command* command, int argc, char** argv) {
         return cli_usage_error(&run, "missing %s (usage: fabvdb %s %s)",
                                run.positional_count == 0 ? "input file" : "argument", command->name, command->usage);
     run.quiet = cli_get(&run, "--quiet")->given;
+    int output_problem = check_output_directories(&run);
+    if (output_problem) return output_problem;
     const cli_value* save_job = cli_get(&run, "--save-job");
     if (save_job->set) {
         if (cli_write_job(save_job->text, command->name, argc, argv) != 0) {

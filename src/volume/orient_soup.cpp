@@ -1,11 +1,16 @@
 //! Consistent, outward orientation of a triangle soup (see orient_soup.h).
 #include "volume/orient_soup.h"
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <unordered_map>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+
+#include "volume/winding_number.h"
 
 namespace fabvdb::volume {
 
@@ -17,6 +22,95 @@ using Point = Kernel::Point_3;
 uint32_t find_root(std::vector<uint32_t>& parent, uint32_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
+}
+
+// A triangle's (merged) point indices in increasing order, and their hash.
+Triangle sorted_corners(const Triangle& t) {
+    Triangle sorted = t;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted;
+}
+
+struct CornersHash {
+    size_t operator()(const Triangle& t) const {
+        return (size_t(t[0]) * 0x9E3779B97F4A7C15ull) ^ (size_t(t[1]) * 0xC2B2AE3D27D4EB4Full) ^ size_t(t[2]);
+    }
+};
+
+// Whether t and u list the same corners in the same cyclic order.
+bool same_cycle(const Triangle& t, const Triangle& u) {
+    for (int r = 0; r < 3; ++r)
+        if (t[0] == u[r] && t[1] == u[(r + 1) % 3] && t[2] == u[(r + 2) % 3]) return true;
+    return false;
+}
+
+// A piece that the input oriented inward (by the area of its triangles whose
+// input order disagrees with the outward one) and that lies inside the solid
+// of the outward pieces (their winding number at one of its points) is the
+// wall of a cavity: it is turned back inward. Other pieces stay outward.
+void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_t>& parent) {
+    const auto position_key = [](const Vec3& p) {
+        return std::hash<double>()(p[0]) * 0x9E3779B97F4A7C15ull ^ std::hash<double>()(p[1]) * 0xC2B2AE3D27D4EB4Full ^
+               std::hash<double>()(p[2]);
+    };
+    std::unordered_multimap<uint64_t, uint32_t> by_position;
+    for (uint32_t i = 0; i < oriented.vertices.size(); ++i) by_position.emplace(position_key(oriented.vertices[i]), i);
+    const auto merged = [&](const Vec3& p) -> int64_t {
+        auto [first, last] = by_position.equal_range(position_key(p));
+        for (auto it = first; it != last; ++it)
+            if (oriented.vertices[it->second] == p) return it->second;
+        return -1;
+    };
+    std::unordered_map<Triangle, Triangle, CornersHash> input_order;
+    for (const Triangle& t : input.triangles) {
+        Triangle u;
+        bool found = true;
+        for (int k = 0; k < 3 && found; ++k) {
+            const int64_t m = merged(input.vertices[t[k]]);
+            found = m >= 0;
+            u[k] = uint32_t(std::max<int64_t>(m, 0));
+        }
+        if (found) input_order.emplace(sorted_corners(u), u);
+    }
+
+    std::unordered_map<uint32_t, std::array<double, 2>> agreement;  // root -> {agreeing area, total area}
+    std::unordered_map<uint32_t, std::pair<double, Vec3>> sample;     // root -> largest triangle's centroid
+    for (const Triangle& t : oriented.triangles) {
+        const Vec3 &a = oriented.vertices[t[0]], &b = oriented.vertices[t[1]], &c = oriented.vertices[t[2]];
+        const Vec3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double area = std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) +
+                                      std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
+                                      std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
+        const uint32_t root = find_root(parent, t[0]);
+        auto& [agreeing, total] = agreement[root];
+        total += area;
+        const auto it = input_order.find(sorted_corners(t));
+        if (it != input_order.end() && same_cycle(t, it->second)) agreeing += area;
+        auto& best = sample[root];
+        if (area > best.first)
+            best = {area, Vec3{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3}};
+    }
+
+    std::vector<uint32_t> inward_roots;
+    Mesh outward;
+    outward.vertices = oriented.vertices;
+    for (const auto& [root, area] : agreement) {
+        if (area[0] < 0.5 * area[1]) inward_roots.push_back(root);
+    }
+    if (inward_roots.empty()) return;
+    for (const Triangle& t : oriented.triangles) {
+        const uint32_t root = find_root(parent, t[0]);
+        if (std::find(inward_roots.begin(), inward_roots.end(), root) == inward_roots.end())
+            outward.triangles.push_back(t);
+    }
+    if (outward.triangles.empty()) return;
+    const WindingNumber solid(outward);
+    std::vector<uint32_t> cavity_roots;
+    for (uint32_t root : inward_roots)
+        if (solid(sample[root].second) >= 0.5) cavity_roots.push_back(root);
+    for (Triangle& t : oriented.triangles)
+        if (std::find(cavity_roots.begin(), cavity_roots.end(), find_root(parent, t[0])) != cavity_roots.end())
+            std::swap(t[1], t[2]);
 }
 
 }  // namespace
@@ -72,6 +166,8 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
     }
     for (Triangle& t : oriented.triangles)
         if (volume[find_root(parent, t[0])] < 0.0) std::swap(t[1], t[2]);
+    progress.update(0.9);
+    keep_cavities_inward(mesh, oriented, parent);
     progress.update(1.0);
     return oriented;
 }

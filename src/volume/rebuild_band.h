@@ -1,8 +1,12 @@
 //! A fresh narrow band around one iso-surface of a scalar grid: the surface
-//! {value = isovalue} is extracted and converted back to a signed distance
-//! field (OpenVDB levelSetRebuild), so the result is a true SDF of that
-//! surface (isovalue 0: the grid's own surface made exact; > 0: grown by that
-//! distance). Level set class, name and transform kept. Cancellable.
+//! {value = isovalue} is extracted (volumeToMesh), its unsigned distance is
+//! computed in a narrow band (meshToVolume), and each band voxel takes its
+//! sign from the input grid at the same voxel, so the result is a true SDF of
+//! that surface (isovalue 0: the grid's own surface made exact; > 0: grown by
+//! that distance) that keeps every enclosed cavity — unlike OpenVDB's
+//! levelSetRebuild, whose exterior flood fills cavities. Off the band, signs
+//! come from signedFloodFill. Level set class, name and transform kept.
+//! Cancellable.
 #pragma once
 
 #include <openvdb/openvdb.h>

@@ -39,4 +39,30 @@ expect_no_file "$WORK/x.stl"
 expect_exit 2 "$FABVDB" repair "$WORK/missing.obj" -o "$WORK/missing.stl"
 expect_no_file "$WORK/missing.stl"
 
+# An unwritable report path is refused before any output is written.
+expect_exit 2 "$FABVDB" repair "$MESHES/cube_no_bottom.obj" -o "$WORK/early.stl" --resolution 24 \
+  --report "$WORK/no/such/dir/r.json"
+expect_match "$STDERR" "no/such/dir does not exist"
+expect_no_file "$WORK/early.stl"
+
+# A hollow part (outer shell out, cavity shell in) stays hollow: 40 mm cube,
+# 3 mm wall, so 40^3 - 34^3 = 24696 mm^3 of material.
+{
+  for z in 0 40; do for y in 0 40; do for x in 0 40; do echo "v $x $y $z"; done; done; done
+  for z in 3 37; do for y in 3 37; do for x in 3 37; do echo "v $x $y $z"; done; done; done
+  for o in 0 8; do
+    for f in "1 3 4 2" "5 6 8 7" "1 2 6 5" "3 7 8 4" "1 5 7 3" "2 4 8 6"; do
+      set -- $f
+      if [ $o -eq 0 ]; then echo "f $(($1+o)) $(($2+o)) $(($3+o)) $(($4+o))"
+      else echo "f $(($4+o)) $(($3+o)) $(($2+o)) $(($1+o))"; fi
+    done
+  done
+} >"$WORK/hollow_cube.obj"
+expect_exit 0 "$FABVDB" info "$WORK/hollow_cube.obj" --report "$WORK/hollow_in.json"
+expect_match "$(cat "$WORK/hollow_in.json")" '"volume": 24696'
+expect_exit 0 "$FABVDB" repair "$WORK/hollow_cube.obj" -o "$WORK/hollow_out.stl" --voxel 0.5mm --quiet
+expect_exit 0 "$FABVDB" info "$WORK/hollow_out.stl" --report "$WORK/hollow_out.json"
+expect_match "$(cat "$WORK/hollow_out.json")" '"volume": 24[67][0-9][0-9]'
+expect_match "$(cat "$WORK/hollow_out.json")" '"components": 2'
+
 finish

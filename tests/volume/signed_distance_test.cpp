@@ -113,6 +113,44 @@ TEST(SignedDistance, OpenBoxIsClosedAcrossItsHole) {
                    [](const Vec3& p) { return box_distance(p, {0, 0, 0}, {10, 10, 10}); }, 0.3);
 }
 
+// A hollow part as a farm receives it: the outer shell faces out and the
+// cavity shell faces in. The cavity is kept, whether the band is consistent
+// (closed shells) or rebuilt (the outer shell has a hole).
+double hollow_box_distance(const Vec3& p) {
+    return std::max(box_distance(p, {0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}),
+                    -box_distance(p, {3.13, 3.07, 3.11}, {17.13, 17.07, 17.11}));
+}
+
+Mesh hollow_box() {
+    return fabvdb::test::merged(fabvdb::test::make_box({0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}),
+                                fabvdb::test::flipped(fabvdb::test::make_box({3.13, 3.07, 3.11}, {17.13, 17.07, 17.11})));
+}
+
+TEST(SignedDistance, HollowInputKeepsItsCavity) {
+    auto grid = distance(hollow_box(), 0.25);
+    expect_matches(*grid, {-2, -2, -2}, {22, 22, 22}, hollow_box_distance, 0.3);
+    EXPECT_GT(value_at(*grid, {10, 10, 10}), 0.0);
+}
+
+TEST(SignedDistance, HollowInputWithAHoleKeepsItsCavityWhenRebuilt) {
+    const Mesh hollow = hollow_box();
+    Mesh holed;
+    holed.vertices = hollow.vertices;
+    holed.triangles.assign(hollow.triangles.begin() + 1, hollow.triangles.end());  // half of one outer face gone
+    volume::SignedDistanceStats stats;
+    auto grid = distance(holed, 0.25, &stats);
+    EXPECT_TRUE(stats.rebuilt);
+    expect_matches(*grid, {-2, -2, -2}, {22, 22, 22}, hollow_box_distance, 0.3);
+}
+
+TEST(SignedDistance, NestedOutwardShellsUnite) {
+    const Mesh nested = fabvdb::test::merged(fabvdb::test::make_box({0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}),
+                                             fabvdb::test::make_box({3.13, 3.07, 3.11}, {17.13, 17.07, 17.11}));
+    auto grid = distance(nested, 0.25);
+    expect_matches(*grid, {-2, -2, -2}, {22, 22, 22},
+                   [](const Vec3& p) { return box_distance(p, {0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}); }, 0.3);
+}
+
 TEST(SignedDistance, OpenSheetEnclosesNothingUnlessThickened) {
     Mesh sheet;
     sheet.vertices = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}};
