@@ -8,7 +8,8 @@
 # Quality (measured by bench_hollow_quality, independently of the hollowing):
 # the thinnest wall at closing 2 mm and at closing 0, the median wall at
 # closing 0, and the largest distance of the output's outer surface to the
-# input. Installs Debian's prusa-slicer if it is missing.
+# input. Both programs read the same copy of the model scaled to the size (an
+# STL: PrusaSlicer reads no OFF). Installs Debian's prusa-slicer if missing.
 set -euo pipefail
 BUILD="${1:?usage: bench/hollow.sh BUILD_DIR [MODEL...]}"
 shift
@@ -40,11 +41,13 @@ printf '%-26s %4s | %8s %8s %6s | %7s %7s %5s | %8s %8s %8s %9s\n' model mm ps_s
 for model in "${MODELS[@]}"; do
   for size in 60 100; do
     log="$WORK/prusa.log"
+    part="$WORK/part.stl"
+    "$QUALITY" --scaled "$MESHES/$model" "$size" "$part"
     prusa-slicer --export-sla --printer-technology SLA --hollowing-enable --no-supports-enable --no-pad-enable \
       --loglevel 4 --display-width 200 --display-height 200 --display-pixels-x 1440 --display-pixels-y 1440 \
       --bed-shape 0x0,200x0,200x200,0x200 --center 100,100 --max-print-height 200 \
-      --hollowing-min-thickness 3 --hollowing-closing-distance 2 --scale-to-fit "$size,$size,$size" \
-      --datadir "$WORK/prusa-data" -o "$WORK/out.sl1" "$MESHES/$model" >"$log" 2>&1 || true
+      --hollowing-min-thickness 3 --hollowing-closing-distance 2 \
+      --datadir "$WORK/prusa-data" -o "$WORK/out.sl1" "$part" >"$log" 2>&1 || true
     start="$(grep -m1 'Hollowing model' "$log" | seconds_of || true)"
     end="$(grep -m1 'Drilling holes' "$log" | seconds_of || true)"
     if [ -z "$start" ] || [ -z "$end" ]; then
@@ -55,13 +58,13 @@ for model in "${MODELS[@]}"; do
     prusa_seconds="$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }')"
     prusa_mb="$(grep -m1 'Drilling holes' "$log" | sed -n 's/.*Peak memory usage: \([0-9]*\)MB.*/\1/p')"
 
-    /usr/bin/time -f '%M' -o "$WORK/rss" "$FABVDB" hollow "$MESHES/$model" --fit "${size}mm" -o "$WORK/c2.stl" \
+    /usr/bin/time -f '%M' -o "$WORK/rss" "$FABVDB" hollow "$part" -o "$WORK/c2.stl" \
       --wall 3mm --closing 2mm --report "$WORK/c2.json" -q
     fab_seconds="$(sed -n '/"timings"/,/}/p' "$WORK/c2.json" | json_number /dev/stdin total)"
     fab_mb="$(awk '{ printf "%.0f", $1 / 1024 }' "$WORK/rss")"
-    "$FABVDB" hollow "$MESHES/$model" --fit "${size}mm" -o "$WORK/c0.stl" --wall 3mm --closing 0mm -q
-    read -r wmin2 _ _ _ < <("$QUALITY" "$MESHES/$model" "$size" "$WORK/c2.stl")
-    read -r wmin0 wmed0 dev _ < <("$QUALITY" "$MESHES/$model" "$size" "$WORK/c0.stl")
+    "$FABVDB" hollow "$part" -o "$WORK/c0.stl" --wall 3mm --closing 0mm -q
+    read -r wmin2 _ _ _ < <("$QUALITY" "$part" "$size" "$WORK/c2.stl")
+    read -r wmin0 wmed0 dev _ < <("$QUALITY" "$part" "$size" "$WORK/c0.stl")
     printf '%-26s %4s | %8s %8.3f %6.1f | %7s %7s %5.2f | %8s %8s %8s %9s\n' "$model" "$size" "$prusa_seconds" \
       "$fab_seconds" "$(awk -v a="$prusa_seconds" -v b="$fab_seconds" 'BEGIN { print a / b }')" "$prusa_mb" "$fab_mb" \
       "$(awk -v a="$fab_mb" -v b="$prusa_mb" 'BEGIN { print a / b }')" "$wmin2" "$wmin0" "$wmed0" "$dev"

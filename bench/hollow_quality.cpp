@@ -6,6 +6,8 @@
 // triangles; the outer deviation is the distance from the output's outer
 // vertices to the input scaled like `fabvdb --fit FIT_MM`. Prints one line:
 // wall_min wall_median outer_deviation_max outer_deviation_mean (mm).
+// bench_hollow_quality --scaled INPUT FIT_MM OUT writes the input scaled that
+// way instead (one file both slicers read).
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -16,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
+#include <string>
 
 #include "core/error.h"
 #include "io/mesh_io.h"
@@ -34,23 +37,35 @@ Triangle3 triangle(const fabvdb::Mesh& mesh, const fabvdb::Triangle& t) {
     return Triangle3(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]), point(mesh.vertices[t[2]]));
 }
 
+//! Scales `mesh` like `fabvdb --fit fit_mm`: its longest side becomes fit_mm.
+void fit(fabvdb::Mesh& mesh, double fit_mm) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (const auto& p : mesh.vertices)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    const double scale = fit_mm / std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    for (auto& p : mesh.vertices)
+        for (double& x : p) x *= scale;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: bench_hollow_quality INPUT FIT_MM HOLLOWED\n");
+    const bool scaled_copy = argc == 5 && std::string(argv[1]) == "--scaled";
+    if (argc != 4 && !scaled_copy) {
+        std::fprintf(stderr, "usage: bench_hollow_quality INPUT FIT_MM HOLLOWED | --scaled INPUT FIT_MM OUT\n");
         return 1;
     }
     try {
         fabvdb::Progress progress;
+        if (scaled_copy) {
+            fabvdb::Mesh input = fabvdb::io::read_mesh(argv[2], progress);
+            fit(input, std::atof(argv[3]));
+            fabvdb::io::write_mesh(input, argv[4]);
+            return 0;
+        }
         fabvdb::Mesh input = fabvdb::io::read_mesh(argv[1], progress);
         const fabvdb::Mesh output = fabvdb::io::read_mesh(argv[3], progress);
-        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-        for (const auto& p : input.vertices)
-            for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-        const double scale = std::atof(argv[2]) / std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-        for (auto& p : input.vertices)
-            for (double& x : p) x *= scale;
+        fit(input, std::atof(argv[2]));
 
         // Components by union-find over shared vertices, signed volume each.
         std::vector<uint32_t> parent(output.vertices.size());

@@ -297,6 +297,12 @@ typedef struct fabvdb_hollow_options {
                                  Default 0. */
     double adaptivity;        /* [0, 1] simplification of the cavity surface; default 0 */
     double min_cavity_volume; /* mm^3: voids smaller than this are filled; default 0 */
+    double infill_cell;       /* mm; > 0 adds a gyroid strut lattice in the cavity: struts along the
+                                 skeleton of one gyroid labyrinth (the srs net: 8 nodes, 12 struts per
+                                 cubic cell of this side), unioned with the shell, joined to the wall,
+                                 the void around them one open-cell region. Default 0: no infill. */
+    double infill_strut;      /* mm, strut diameter, in (0, infill_cell/4] when infill_cell > 0;
+                                 default 1.2. The automatic voxel is then at most strut / 4. */
 } fabvdb_hollow_options;
 
 /* Fills *options with the defaults above and sets struct_size. NULL does
@@ -319,9 +325,12 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  *   volume_solid, volume_shell, material_saved_fraction, cavity_count,
  *   cavities [{volume}], filled_cavities [{volume}], min_wall_at_vertices,
  *   output_vertices, output_triangles, timings {stage: seconds, total}.
+ *   With infill: infill {pattern, cell, strut}; the cavity vertices are then
+ *   at least (not exactly) the wall from the outer surface.
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle, wall <= 0,
  * closing < 0, voxel larger than the wall, adaptivity outside [0, 1], a wall
- * that leaves no cavity because the part is nowhere thicker than 2*wall);
+ * that leaves no cavity because the part is nowhere thicker than 2*wall,
+ * infill_cell < 0, an infill strut <= 0 or over infill_cell / 4);
  * FABVDB_ERR_BAD_INPUT (a mesh that encloses no volume); FABVDB_ERR_OUT_OF_BUDGET
  * (the voxel size needs more memory than the context's budget; the message
  * names a voxel size that fits); FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY.

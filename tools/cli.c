@@ -210,6 +210,11 @@ double cli_mesh_diagonal(const fabvdb_mesh* mesh) {
     return sqrt(sum);
 }
 
+int cli_is_level_set_path(const char* path) {
+    const size_t n = strlen(path);
+    return n >= 4 && strcasecmp(path + n - 4, ".vdb") == 0;
+}
+
 int cli_write_report(const cli_run* run, const fabvdb_report* report) {
     const cli_value* path = cli_get(run, "--report");
     if (!path->set || !report) return CLI_EXIT_OK;

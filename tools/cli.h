@@ -103,6 +103,10 @@ double cli_mesh_diagonal(const fabvdb_mesh* mesh);
  * error. The caller still owns (and frees) the report. */
 int cli_write_report(const cli_run* run, const fabvdb_report* report);
 
+/* Whether an output path names a level set (ends in .vdb, any case) rather
+ * than a mesh. */
+int cli_is_level_set_path(const char* path);
+
 /* Parses the units of one value; returns 0 on success. */
 int cli_parse_value(cli_option_type type, const char* text, double* number, int* relative);
 

@@ -9,7 +9,7 @@
 #include "commands.h"
 
 static const cli_option options[] = {
-    {"--output", 'o', CLI_STRING, "OUT", NULL, "the hollowed mesh (.stl .obj .ply .off .3mf)"},
+    {"--output", 'o', CLI_STRING, "OUT", NULL, "the hollowed mesh (.stl .obj .ply .off .3mf), or the shell level set (.vdb)"},
     {"--wall", 0, CLI_LENGTH, "LEN", "3mm", "wall thickness (regions thinner than twice this stay solid)"},
     {"--closing", 0, CLI_LENGTH, "LEN", "0mm",
      "closing distance: offset the cavity by -(wall+closing) then +closing, rounding it (PrusaSlicer's meaning)"},
@@ -17,6 +17,9 @@ static const cli_option options[] = {
     {"--resolution", 0, CLI_INT, "N", NULL, "voxel = longest bounding-box side / N (instead of --voxel)"},
     {"--adaptivity", 0, CLI_NUMBER, "A", "0", "simplification of the cavity surface, 0 (none) to 1"},
     {"--min-cavity", 0, CLI_NUMBER, "MM3", "0", "fill voids smaller than this volume (mm^3)"},
+    {"--infill", 0, CLI_STRING, "PATTERN", NULL, "fill the cavity with an open-cell lattice joined to the wall: gyroid"},
+    {"--cell", 0, CLI_LENGTH, "LEN", "10mm", "infill cell size"},
+    {"--strut", 0, CLI_LENGTH, "LEN", "1.2mm", "infill strut diameter (at most cell/4; the automatic voxel is then strut/4)"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb hollow')"},
 };
 
@@ -52,13 +55,33 @@ static int run_hollow(cli_run* run) {
     }
     opts.adaptivity = cli_get(run, "--adaptivity")->number;
     opts.min_cavity_volume = cli_get(run, "--min-cavity")->number;
+    const cli_value* infill = cli_get(run, "--infill");
+    if (infill->set) {
+        if (strcmp(infill->text, "gyroid") != 0) {
+            fabvdb_mesh_free(mesh);
+            return cli_usage_error(run, "--infill: unknown pattern '%s' (known: gyroid)", infill->text);
+        }
+        opts.infill_cell = cli_length_mm(run, "--cell", diagonal);
+        opts.infill_strut = cli_length_mm(run, "--strut", diagonal);
+    } else if (cli_get(run, "--cell")->given || cli_get(run, "--strut")->given) {
+        fabvdb_mesh_free(mesh);
+        return cli_usage_error(run, "--cell and --strut need --infill gyroid");
+    }
 
     fabvdb_report* report = NULL;
-    fabvdb_mesh* hollowed = NULL;
-    fabvdb_status status = fabvdb_mesh_hollow(run->ctx, mesh, &opts, &hollowed, &report);
+    fabvdb_status status;
+    if (cli_is_level_set_path(output->text)) {
+        fabvdb_volume* shell = NULL;
+        status = fabvdb_mesh_hollow_volume(run->ctx, mesh, &opts, &shell, &report);
+        if (status == FABVDB_OK) status = fabvdb_volume_write(run->ctx, shell, output->text);
+        fabvdb_volume_free(shell);
+    } else {
+        fabvdb_mesh* hollowed = NULL;
+        status = fabvdb_mesh_hollow(run->ctx, mesh, &opts, &hollowed, &report);
+        if (status == FABVDB_OK) status = fabvdb_mesh_write(run->ctx, hollowed, output->text);
+        fabvdb_mesh_free(hollowed);
+    }
     fabvdb_mesh_free(mesh);
-    if (status == FABVDB_OK) status = fabvdb_mesh_write(run->ctx, hollowed, output->text);
-    fabvdb_mesh_free(hollowed);
     if (status != FABVDB_OK) {
         fabvdb_report_free(report);
         return cli_fail(run, status);
@@ -82,14 +105,19 @@ static int run_hollow(cli_run* run) {
 const cli_command cmd_hollow = {
     "hollow",
     "hollow a part for printing: a wall under the surface, the inside emptied",
-    "INPUT -o OUTPUT --wall LEN [--closing LEN] [--voxel LEN | --resolution N] [--report R.json]",
+    "INPUT -o OUTPUT --wall LEN [--closing LEN] [--voxel LEN | --resolution N] [--infill gyroid --cell LEN "
+    "--strut LEN] [--report R.json]",
     "Keeps a wall of --wall under the outer surface and empties the rest, as resin and powder printers\n"
     "want. A dirty input (holes, self-intersections, flipped triangles, several shells) is repaired\n"
     "through a robust signed distance first; a clean closed input keeps its own outer triangles.\n"
     "The cavity is the inward offset by the wall, snapped to the exact distance from the outer\n"
     "surface; --closing rounds it (offset by -(wall+closing), then +closing). Regions thinner than\n"
-    "twice the wall stay solid; voids under --min-cavity are filled. The output has the outer shells facing out and the cavity shells\n"
-    "facing in, all closed and disjoint.\n"
+    "twice the wall stay solid; voids under --min-cavity are filled. The output has the outer shells\n"
+    "facing out and the cavity shells facing in, all closed and disjoint; with -o FILE.vdb the shell\n"
+    "level set (negative in the material) is written instead.\n"
+    "--infill gyroid adds struts of diameter --strut along the skeleton of one gyroid labyrinth (the\n"
+    "srs net, 12 struts per cubic cell of side --cell), unioned with the shell: every strut is joined\n"
+    "to the wall and the void around them stays one open-cell region, so powder and resin drain.\n"
     "Exit 1 for a bad parameter (wall <= 0, a wall thicker than half the part), 3 when the voxel\n"
     "size needs more memory than --max-memory.",
     options, sizeof(options) / sizeof(options[0]), 1, 1, run_hollow};

@@ -2,7 +2,6 @@
  * self-intersections, flipped or duplicated triangles, soups, overlapping
  * shells) into a clean watertight solid through a robust level set, or writes
  * the level set itself when OUT ends in .vdb. */
-#include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -18,12 +17,6 @@ static const cli_option options[] = {
     {"--thicken", 0, CLI_LENGTH, "LEN", NULL, "turn an input that encloses no volume (an open sheet) into a sheet this thick"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb repair')"},
 };
-
-static int ends_with_vdb(const char* path) {
-    const size_t n = strlen(path);
-    return n >= 4 && path[n - 4] == '.' && tolower((unsigned char)path[n - 3]) == 'v' &&
-           tolower((unsigned char)path[n - 2]) == 'd' && tolower((unsigned char)path[n - 1]) == 'b';
-}
 
 static int run_repair(cli_run* run) {
     const char* output = cli_get(run, "--output")->text;
@@ -60,7 +53,7 @@ static int run_repair(cli_run* run) {
 
     fabvdb_report* report = NULL;
     fabvdb_status status;
-    if (ends_with_vdb(output)) {
+    if (cli_is_level_set_path(output)) {
         fabvdb_volume* volume = NULL;
         status = fabvdb_volume_from_mesh(run->ctx, mesh, &options, &volume, &report);
         if (status == FABVDB_OK) status = fabvdb_volume_write(run->ctx, volume, output);

@@ -35,6 +35,8 @@ HollowOptions core_options(const fabvdb_hollow_options* opts, const fabvdb::Mesh
     }
     options.adaptivity = given.adaptivity;
     options.min_cavity_volume = given.min_cavity_volume;
+    options.infill.cell = given.infill_cell;
+    options.infill.strut = given.infill_strut;
     options.memory_budget_bytes = ctx->budget_bytes();
     return options;
 }
@@ -58,6 +60,8 @@ nlohmann::json report_of(const HollowResult& result, const HollowOptions& option
     for (double v : result.filled_cavity_volumes) report["filled_cavities"].push_back({{"volume", v}});
     report["min_wall_at_vertices"] =
         result.cavity_volumes.empty() ? nlohmann::json() : nlohmann::json(result.min_wall_at_vertices);
+    if (options.infill.cell > 0.0)
+        report["infill"] = {{"pattern", "gyroid"}, {"cell", options.infill.cell}, {"strut", options.infill.strut}};
     report["output_vertices"] = result.mesh.vertices.size();
     report["output_triangles"] = result.mesh.triangles.size();
     report["timings"] = result.timings;
@@ -90,6 +94,8 @@ void fabvdb_hollow_options_init(fabvdb_hollow_options* options) {
     options->resolution = 0;
     options->adaptivity = 0.0;
     options->min_cavity_volume = 0.0;
+    options->infill_cell = 0.0;
+    options->infill_strut = 1.2;
 }
 
 fabvdb_status fabvdb_mesh_hollow(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_hollow_options* opts,

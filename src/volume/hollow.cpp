@@ -2,6 +2,7 @@
 //! offset and opening, exact snap, void regions, separation proof.
 #include "volume/hollow.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -53,6 +54,8 @@ void validate(const HollowOptions& o) {
             "voxel size must not exceed the wall (a wall needs at least one voxel)");
     require(o.adaptivity >= 0.0 && o.adaptivity <= 1.0, "adaptivity must be in [0, 1]");
     require(std::isfinite(o.min_cavity_volume) && o.min_cavity_volume >= 0.0, "minimum cavity volume must be >= 0");
+    require(std::isfinite(o.infill.cell) && o.infill.cell >= 0.0, "infill cell must be >= 0 mm (0: no infill)");
+    if (o.infill.cell > 0.0) validate_gyroid_struts(o.infill);
 }
 
 //! Distance band of the solid reaching `interior_depth` mm inside, with the
@@ -105,7 +108,12 @@ void check_budget(const Mesh& outer, const HollowOptions& o, double voxel) {
     if (o.memory_budget_bytes == 0) return;
     const double area = surface_area(outer);
     const int half_band = int(std::ceil(0.5 * ((o.wall + o.closing) / voxel + 5.0)));
-    const uint64_t bytes = estimate_level_set_bytes(area, voxel, half_band);
+    uint64_t bytes = estimate_level_set_bytes(area, voxel, half_band);
+    if (o.infill.cell > 0.0) {
+        const BoundingBox box = bounding_box(outer);
+        const double box_volume = (box.max[0] - box.min[0]) * (box.max[1] - box.min[1]) * (box.max[2] - box.min[2]);
+        bytes = std::max(bytes, estimate_gyroid_struts_bytes(o.infill, box_volume, voxel));
+    }
     if (bytes <= o.memory_budget_bytes) return;
     std::ostringstream message;
     message.precision(3);
@@ -137,7 +145,11 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     openvdb::initialize();
     HollowResult result;
     StageClock clock(result.timings);
-    const double voxel = options.voxel_size > 0.0 ? options.voxel_size : automatic_hollow_voxel(options.wall);
+    // With infill at most strut / 4 automatically, so a strut is four voxels across.
+    const double voxel = options.voxel_size > 0.0 ? options.voxel_size
+                         : options.infill.cell > 0.0
+                             ? std::min(automatic_hollow_voxel(options.wall), options.infill.strut / 4.0)
+                             : automatic_hollow_voxel(options.wall);
     result.voxel_size = voxel;
 
     // The outer surface: the input itself when it is clean, else the surface
@@ -185,11 +197,17 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
         cavity = shifted(*solid.distance, float(options.wall));
     }
     clock.lap("cavity offset");
+    if (options.infill.cell > 0.0) {
+        cavity = carve_gyroid_struts(*cavity, options.infill, progress);
+        clock.lap("infill");
+    }
     Mesh cavity_surface = extract_mesh(*cavity, options.adaptivity, progress);
     cavity.reset();
     clock.lap("cavity extraction");
 
-    const OffsetSnap snap = options.closing == 0.0 ? OffsetSnap::exact : OffsetSnap::at_least;
+    // Strut surfaces lie deeper than the wall: with infill only shallow vertices move.
+    const OffsetSnap snap =
+        options.closing == 0.0 && options.infill.cell == 0.0 ? OffsetSnap::exact : OffsetSnap::at_least;
     const SnapStats snapped =
         snap_to_offset(cavity_surface, outer, *solid.closest_triangle, options.wall, snap, progress);
     result.min_wall_at_vertices = snapped.min_depth;

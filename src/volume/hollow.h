@@ -8,7 +8,8 @@
 //! Guarantees: outer shells face out, cavity shells face in, every shell is
 //! closed and no cavity triangle touches the outer surface (checked exactly);
 //! regions thinner than 2·wall stay solid; voids under `min_cavity_volume`
-//! are filled. Cancellable; the
+//! are filled. An optional gyroid strut infill is carved out of the cavity
+//! (see gyroid_infill.h) before extraction. Cancellable; the
 //! memory budget is checked before any grid is built.
 #pragma once
 
@@ -21,6 +22,7 @@
 
 #include "core/mesh.h"
 #include "core/progress.h"
+#include "volume/gyroid_infill.h"
 
 namespace fabvdb::volume {
 
@@ -30,6 +32,7 @@ struct HollowOptions {
     double voxel_size = 0.0;         //!< mm; 0: automatic (see automatic_hollow_voxel)
     double adaptivity = 0.0;         //!< [0, 1], of the cavity extraction
     double min_cavity_volume = 0.0;  //!< mm³: smaller voids are filled
+    GyroidStruts infill;             //!< cell 0: no infill
     uint64_t memory_budget_bytes = 0;  //!< 0: no limit
     std::string input_name = "mesh";   //!< for messages
 };

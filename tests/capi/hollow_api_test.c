@@ -4,6 +4,7 @@
  * leaving the out-parameters untouched. */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "check.h"
 #include "fabvdb.h"
@@ -43,6 +44,7 @@ int main(void) {
     fabvdb_hollow_options_init(&options);
     CHECK(options.struct_size == sizeof(options));
     CHECK(options.wall == 3.0 && options.closing == 0.0 && options.voxel_size == 0.0);
+    CHECK(options.infill_cell == 0.0 && options.infill_strut == 1.2);
 
     fabvdb_mesh* hollowed = NULL;
     fabvdb_report* report = NULL;
@@ -61,10 +63,35 @@ int main(void) {
     fabvdb_report_free(report);
     fabvdb_mesh_free(hollowed);
 
+    /* The shell level set, written and read back, encloses the shell. */
     fabvdb_volume* shell_volume = NULL;
     CHECK(fabvdb_mesh_hollow_volume(ctx, cube, &options, &shell_volume, NULL) == FABVDB_OK);
     CHECK(shell_volume != NULL);
+    const char* vdb_path = "hollow_api_test_shell.vdb";
+    CHECK(fabvdb_volume_write(ctx, shell_volume, vdb_path) == FABVDB_OK);
     fabvdb_volume_free(shell_volume);
+    shell_volume = NULL;
+    CHECK(fabvdb_volume_read(ctx, vdb_path, &shell_volume) == FABVDB_OK);
+    remove(vdb_path);
+    fabvdb_mesh* shell_surface = NULL;
+    CHECK(fabvdb_volume_to_mesh(ctx, shell_volume, NULL, &shell_surface) == FABVDB_OK);
+    CHECK(fabs(signed_volume(shell_surface) - shell) < 0.03 * shell);
+    fabvdb_mesh_free(shell_surface);
+    fabvdb_volume_free(shell_volume);
+
+    /* Gyroid infill adds material inside the cavity and is reported. */
+    options.infill_cell = 10.0;
+    options.infill_strut = 2.0;
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, &report) == FABVDB_OK);
+    CHECK(signed_volume(hollowed) > shell + 0.03 * 39304.0);
+    CHECK(fabvdb_report_number(ctx, report, "/infill/strut", &number) == FABVDB_OK && number == 2.0);
+    fabvdb_report_free(report);
+    fabvdb_mesh_free(hollowed);
+    hollowed = NULL;
+    options.infill_strut = 3.0; /* over a quarter of the cell */
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    CHECK(hollowed == NULL);
+    options.infill_cell = 0.0;
 
     /* Bad arguments leave the out-parameters untouched. */
     hollowed = NULL;

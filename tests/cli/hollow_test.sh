@@ -43,6 +43,18 @@ expect_exit 0 "$FABVDB" hollow "$MESHES/teapot.obj" --fit 40mm -o "$WORK/teapot.
 expect_match "$(cat "$WORK/teapot.json")" '"outer_surface": "repaired"'
 check_hollowed "$WORK/teapot.ply" "$WORK/teapot.json"
 
+# The shell level set with -o .vdb.
+expect_exit 0 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/sphere.vdb" --wall 3mm --voxel 1mm -q
+[ -s "$WORK/sphere.vdb" ] && passed=$((passed + 1)) || fail "no VDB written"
+
+# Gyroid infill: one solid (struts joined to the wall) around one void.
+expect_exit 0 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/lattice.stl" --wall 2mm --voxel 0.5mm \
+  --infill gyroid --cell 10mm --strut 2mm --report "$WORK/lattice.json"
+expect_match "$(cat "$WORK/lattice.json")" '"pattern": "gyroid"'
+expect_match "$(cat "$WORK/lattice.json")" '"cavity_count": 1'
+check_hollowed "$WORK/lattice.stl" "$WORK/lattice.json"
+expect_match "$(cat "$WORK/info.json")" '"components": 2'
+
 # Bad parameters: exit 1 (or 3 for the budget) and no output.
 expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --wall 0mm
 expect_match "$STDERR" "wall"
@@ -57,4 +69,11 @@ expect_no_file "$WORK/bad.stl"
 expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --wall 2mm --voxel 3mm
 expect_no_file "$WORK/bad.stl"
 expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --wall 2mm
+expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --infill honeycomb
+expect_match "$STDERR" "gyroid"
+expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --cell 5mm
+expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.vdb" --infill gyroid --cell 4mm \
+  --strut 2mm
+expect_no_file "$WORK/bad.vdb"
+expect_no_file "$WORK/bad.stl"
 finish

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <random>
 
 #include "core/error.h"
 #include "io/mesh_io.h"
@@ -41,6 +42,7 @@ struct Inspected {
     bool cavity_self_intersecting = true, cavity_touches_outer = true;
     std::vector<Triangle3> outer, cavity;
     double outer_volume = 0, cavity_volume = 0;  // cavity_volume > 0
+    int outer_shells = 0, cavity_shells = 0;
 };
 
 Inspected inspect(const Mesh& mesh) {
@@ -69,7 +71,10 @@ Inspected inspect(const Mesh& mesh) {
                                  surface.point(surface.target(surface.next(h))));
         (volume[component[f]] > 0 ? result.outer : result.cavity).push_back(triangle);
     }
-    for (double v : volume) (v > 0 ? result.outer_volume : result.cavity_volume) += std::abs(v);
+    for (double v : volume) {
+        (v > 0 ? result.outer_volume : result.cavity_volume) += std::abs(v);
+        ++(v > 0 ? result.outer_shells : result.cavity_shells);
+    }
 
     SurfaceMesh cavity_surface;
     std::map<SurfaceMesh::Vertex_index, SurfaceMesh::Vertex_index> copied;
@@ -236,6 +241,76 @@ TEST(Hollow, SharedMeshesHollowIntoClosedDisjointShells) {
     EXPECT_EQ(hollowed, 25);
 }
 
+//! The struts of the srs net (the gyroid's labyrinth skeleton) in a cell of
+//! side 1, from its crystallographic description: Wyckoff positions 8a of
+//! I4_132 (x, x, x with x = 1/8, its three screw images, and those moved by
+//! the body centring), each joined to its 3 nearest nodes.
+std::vector<std::pair<Point, Point>> srs_struts() {
+    std::vector<Point> nodes;
+    for (const Point& p : {Point(1, 1, 1), Point(3, 7, 5), Point(7, 5, 3), Point(5, 3, 7)}) {
+        nodes.emplace_back(p.x() / 8, p.y() / 8, p.z() / 8);
+        nodes.emplace_back(std::fmod(p.x() / 8 + 0.5, 1.0), std::fmod(p.y() / 8 + 0.5, 1.0),
+                           std::fmod(p.z() / 8 + 0.5, 1.0));
+    }
+    std::vector<std::pair<Point, Point>> struts;
+    for (const Point& a : nodes)
+        for (const Point& b : nodes)
+            for (int i = -1; i <= 1; ++i)
+                for (int j = -1; j <= 1; ++j)
+                    for (int k = -1; k <= 1; ++k) {
+                        const Point c(b.x() + i, b.y() + j, b.z() + k);
+                        if (std::abs(std::sqrt(CGAL::squared_distance(a, c)) - std::sqrt(2.0) / 4) < 1e-9)
+                            struts.emplace_back(a, c);  // each strut twice: harmless for distances
+                    }
+    return struts;
+}
+
+TEST(Hollow, GyroidInfillJoinsTheWallAndKeepsOneOpenCavity) {
+    const double radius = 14.0, wall = 2.0, cell = 8.0, strut = 1.6, voxel = 0.4;
+    const Mesh sphere = test::make_sphere({0, 0, 0}, radius, 5);
+    Progress progress;
+    const Inspected plain = inspect(hollow(sphere, options_with(wall, voxel), progress).mesh);
+    HollowOptions options = options_with(wall, voxel);
+    options.infill = {cell, strut};
+    const HollowResult result = hollow(sphere, options, progress);
+    const Inspected filled = inspect(result.mesh);
+    expect_valid_shells(filled, "gyroid infill");
+    // One solid (every strut joined to the wall) around one void (the void is
+    // one connected surface: powder and resin drain from all of it).
+    EXPECT_EQ(filled.outer_shells, 1);
+    EXPECT_EQ(filled.cavity_shells, 1);
+    EXPECT_EQ(result.cavity_volumes.size(), 1u);
+    EXPECT_GE(wall_samples(filled).front(), wall - voxel);
+
+    // The infill volume against a Monte Carlo estimate of struts of that
+    // diameter inside the plain cavity (taken as the ball of its volume).
+    const double cavity_radius = std::cbrt(3.0 * plain.cavity_volume / (4.0 * M_PI));
+    const auto struts = srs_struts();
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> uniform(-cavity_radius, cavity_radius);
+    int inside = 0, in_strut = 0;
+    while (inside < 40000) {
+        const Point p(uniform(random), uniform(random), uniform(random));
+        if (CGAL::squared_distance(p, Point(0, 0, 0)) > cavity_radius * cavity_radius) continue;
+        ++inside;
+        const Point unit(p.x() / cell - std::floor(p.x() / cell), p.y() / cell - std::floor(p.y() / cell),
+                         p.z() / cell - std::floor(p.z() / cell));
+        double nearest = 1e9;
+        for (const auto& [a, b] : struts)
+            for (int i = -1; i <= 1; ++i)
+                for (int j = -1; j <= 1; ++j)
+                    for (int k = -1; k <= 1; ++k) {
+                        const Kernel::Vector_3 shift(i, j, k);
+                        nearest = std::min(nearest, CGAL::squared_distance(unit + shift, Kernel::Segment_3(a, b)));
+                    }
+        in_strut += std::sqrt(nearest) * cell < strut / 2;
+    }
+    const double expected = plain.cavity_volume * in_strut / inside;
+    const double infill = plain.cavity_volume - filled.cavity_volume;
+    EXPECT_GT(expected, 0.05 * plain.cavity_volume);
+    EXPECT_NEAR(infill, expected, 0.08 * expected);
+}
+
 TEST(Hollow, BadParameters) {
     const Mesh sphere = test::make_sphere({0, 0, 0}, 10, 3);
     Progress progress;
@@ -251,6 +326,11 @@ TEST(Hollow, BadParameters) {
     EXPECT_EQ(status_of(options_with(-1.0, 0.5)), FABVDB_ERR_INVALID_ARGUMENT);
     EXPECT_EQ(status_of(options_with(12.0, 1.0)), FABVDB_ERR_INVALID_ARGUMENT);  // thicker than the part
     EXPECT_EQ(status_of(options_with(2.0, 0.5, -1.0)), FABVDB_ERR_INVALID_ARGUMENT);
+    HollowOptions lattice = options_with(2.0, 0.5);
+    lattice.infill = {8.0, 2.5};  // struts wider than a quarter of the cell
+    EXPECT_EQ(status_of(lattice), FABVDB_ERR_INVALID_ARGUMENT);
+    lattice.infill = {8.0, 0.0};
+    EXPECT_EQ(status_of(lattice), FABVDB_ERR_INVALID_ARGUMENT);
     HollowOptions tight = options_with(2.0, 0.001);
     tight.memory_budget_bytes = 64u << 20;
     EXPECT_EQ(status_of(tight), FABVDB_ERR_OUT_OF_BUDGET);
