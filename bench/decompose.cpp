@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
             const int merged = record["parts_touched"][0];
             ranked = d.parts[merged].energy.total;
             exhaustive = best_parting_line(shell, r.terms, d.part_of_triangle, merged, settings.decomposition.weights,
-                                           progress, 81)
+                                           {}, progress, 81)
                              .energy.total;
         } catch (const Error& e) {
             std::fprintf(stderr, "%s: edit skipped: %s\n", row.name, e.what());

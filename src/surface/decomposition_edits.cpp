@@ -199,22 +199,24 @@ std::vector<int> apply_cut(const Shell& shell, const MoldabilityTerms& terms, co
         for (int k = 0; k < 3; ++k)
             if (cut_edges.count(std::minmax(f[k], f[(k + 1) % 3]))) crossed.insert(decomposition.part_of_triangle[t]);
     }
-    std::vector<int> touched;
+    std::vector<int> touched, former_direction;  // each piece and the direction of the part it came from
     for (int p : crossed) {
         const auto pieces = pieces_of(shell, triangles_of_part(decomposition, p), cut_edges);
         if (pieces.size() < 2) continue;
         touched.push_back(p);
+        former_direction.push_back(decomposition.parts[p].direction);
         for (size_t i = 1; i < pieces.size(); ++i) {
             const int id = int(decomposition.parts.size());
             decomposition.parts.emplace_back();
             for (uint32_t t : pieces[i]) decomposition.part_of_triangle[t] = id;
             touched.push_back(id);
+            former_direction.push_back(decomposition.parts[p].direction);
         }
     }
     if (touched.empty()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": the cut does not separate any part");
-    for (int p : touched)
-        decomposition.parts[p] = best_parting_line(shell, terms, decomposition.part_of_triangle, p, options.weights,
-                                                   progress);
+    for (size_t i = 0; i < touched.size(); ++i)
+        decomposition.parts[touched[i]] = best_parting_line(shell, terms, decomposition.part_of_triangle, touched[i],
+                                                            options.weights, {former_direction[i]}, progress);
     return touched;
 }
 
@@ -233,7 +235,8 @@ std::vector<int> apply_merge(const Shell& shell, const MoldabilityTerms& terms, 
     for (int& p : decomposition.part_of_triangle)
         if (p == gone) p = kept;
     decomposition.parts[kept] =
-        best_parting_line(shell, terms, decomposition.part_of_triangle, kept, options.weights, progress);
+        best_parting_line(shell, terms, decomposition.part_of_triangle, kept, options.weights,
+                          {decomposition.parts[a].direction, decomposition.parts[b].direction}, progress);
     return {kept, gone};
 }
 

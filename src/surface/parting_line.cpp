@@ -260,9 +260,14 @@ PartMolding parting_line(const Shell& shell, const MoldabilityTerms& terms, cons
 
 PartMolding best_parting_line(const Shell& shell, const MoldabilityTerms& terms,
                               const std::vector<int>& part_of_triangle, int part, const MoldabilityWeights& weights,
-                              Progress& progress, size_t candidates_checked) {
+                              const std::vector<int>& hints, Progress& progress, size_t candidates_checked) {
     PartSurface surface = part_surface(shell, part_of_triangle, part);
-    const std::vector<int> candidates = ranked_candidates(shell, terms, surface, candidates_checked);
+    std::vector<int> candidates = ranked_candidates(shell, terms, surface, candidates_checked);
+    for (int hint : hints) {
+        const Vec3& axis = terms.axes[terms.axis_of_direction[hint]];
+        const int d = terms.directions.directions[hint] == axis ? hint : terms.directions.opposite[hint];
+        if (std::find(candidates.begin(), candidates.end(), d) == candidates.end()) candidates.push_back(d);
+    }
     std::vector<double> energy(candidates.size(), 1e300);
     tbb::enumerable_thread_specific<std::unique_ptr<CutNetwork>> networks;
     tbb::parallel_for(size_t(0), candidates.size(), [&](size_t c) {

@@ -33,9 +33,11 @@ PartMolding parting_line(const Shell& shell, const MoldabilityTerms& terms, cons
 //! §3.5). d and −d give the same E_P, so the 81 axes are ranked by the E_P
 //! of the labelling M⁺ = {n·d ≥ 0} (cheap: precomputed terms only) and the
 //! parting line (graph cut, fix-up, energy) is computed, in parallel, for the
-//! `candidates_checked` best ranked (81: all of them, the exact argmin).
+//! `candidates_checked` best ranked (81: all of them, the exact argmin) and
+//! for the axes of the `hints` (e.g. the directions the part's triangles had
+//! before a cut or merge).
 PartMolding best_parting_line(const Shell& shell, const MoldabilityTerms& terms,
                               const std::vector<int>& part_of_triangle, int part, const MoldabilityWeights& weights,
-                              Progress& progress, size_t candidates_checked = 12);
+                              const std::vector<int>& hints, Progress& progress, size_t candidates_checked = 12);
 
 }  // namespace fabvdb::surface
