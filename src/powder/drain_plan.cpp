@@ -99,6 +99,7 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     plan.baseline = baseline_holes(candidates, per_cavity, first.gravity, search.min_center_distance);
     plan.baseline_evaluation = model.evaluate(plan.baseline);
     clock.lap("baseline");
+    if (options.inspect) options.inspect(model, candidates);
     return plan;
 }
 

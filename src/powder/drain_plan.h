@@ -7,6 +7,7 @@
 //! Reports progress; cancellable (Error(CANCELLED), no partial result).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -35,6 +36,10 @@ struct DrainPlanOptions {
     size_t powder_samples = 60000;
     HoleSearchOptions search;
     KeepOut keep_out;
+    //! If set, called once the holes are chosen with the model and every
+    //! candidate site (both live only during the call): for validation
+    //! tools that evaluate hole sets of their own.
+    std::function<void(const DrainabilityModel&, const std::vector<DrainHole>& candidates)> inspect;
 };
 
 struct DrainPlan {

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
@@ -28,12 +28,63 @@ std::vector<std::vector<uint32_t>> region_members(const OrientationFlow& flow) {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-Eigen::VectorXd solve(const SparseMatrix& matrix, const Eigen::VectorXd& rhs) {
-    Eigen::BiCGSTAB<SparseMatrix> solver;
-    solver.setTolerance(1e-10);
-    solver.compute(matrix);
-    Eigen::VectorXd x = solver.solve(rhs);
-    if (solver.info() != Eigen::Success)
+//! When ranking candidates (exact evaluations use everything): wet patches
+//! probed per basin, and first-turn powder samples per basin.
+constexpr size_t kGainProbes = 12;
+constexpr size_t kGainSamples = 4096;
+
+//! y = matrix · x, rows in parallel.
+Eigen::VectorXd multiply(const SparseMatrix& matrix, const Eigen::VectorXd& x) {
+    Eigen::VectorXd y(matrix.rows());
+    const int* outer = matrix.outerIndexPtr();
+    const int* inner = matrix.innerIndexPtr();
+    const double* value = matrix.valuePtr();
+    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, matrix.rows(), 256),
+                      [&](const tbb::blocked_range<Eigen::Index>& rows) {
+                          for (Eigen::Index i = rows.begin(); i < rows.end(); ++i) {
+                              double sum = 0.0;
+                              for (int e = outer[i]; e < outer[i + 1]; ++e) sum += value[e] * x[inner[e]];
+                              y[i] = sum;
+                          }
+                      });
+    return y;
+}
+
+//! Solves (base + effort · captured) x = rhs by BiCGSTAB with a Jacobi
+//! preconditioner, applying the two parts one after the other so the system
+//! is never assembled (the base is the large, fixed part). For the transposed
+//! system pass the transposes.
+Eigen::VectorXd solve(const SparseMatrix& base, const SparseMatrix& captured, double effort,
+                      const Eigen::VectorXd& rhs) {
+    auto apply = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd {
+        return multiply(base, x) + effort * (captured * x);
+    };
+    const Eigen::VectorXd inverse_diagonal = (base.diagonal() + effort * captured.diagonal()).cwiseInverse();
+    const double tolerance = 1e-7 * rhs.norm();
+    Eigen::VectorXd x = inverse_diagonal.cwiseProduct(rhs);
+    Eigen::VectorXd r = rhs - apply(x);
+    const Eigen::VectorXd shadow = r;
+    Eigen::VectorXd p = Eigen::VectorXd::Zero(rhs.size()), v = p;
+    double rho = 1.0, alpha = 1.0, omega = 1.0;
+    for (int iteration = 0; iteration < 1000 && r.norm() > tolerance; ++iteration) {
+        const double rho_next = shadow.dot(r);
+        if (rho_next == 0.0) break;
+        const double beta = (rho_next / rho) * (alpha / omega);
+        rho = rho_next;
+        p = r + beta * (p - omega * v);
+        const Eigen::VectorXd y = inverse_diagonal.cwiseProduct(p);
+        v = apply(y);
+        alpha = rho / shadow.dot(v);
+        const Eigen::VectorXd s = r - alpha * v;
+        const Eigen::VectorXd z = inverse_diagonal.cwiseProduct(s);
+        const Eigen::VectorXd t = apply(z);
+        const double tt = t.dot(t);
+        omega = tt > 0.0 ? t.dot(s) / tt : 0.0;
+        x += alpha * y + omega * z;
+        r = s - omega * t;
+        if (omega == 0.0) break;
+    }
+    if (!(r.norm() <= 1e-5 * rhs.norm()))
         throw Error(FABVDB_ERR_INTERNAL, "the drainability system did not converge");
     return x;
 }
@@ -41,16 +92,17 @@ Eigen::VectorXd solve(const SparseMatrix& matrix, const Eigen::VectorXd& rhs) {
 }  // namespace
 
 struct DrainabilityModel::TurnChain {
-    SparseMatrix matrix;
+    SparseMatrix base;  //!< I − ρ Σ_g w_g S(g): the chain without holes
+    SparseMatrix base_transposed;
 };
 
 namespace {
 
-//! I − ρQ for the leaving fractions `capture` (per turn, per patch);
-//! `leave` (if not null) receives r.
-SparseMatrix turn_system(const std::vector<OrientationFlow>& turns, const SparseMatrix& chain, double effort,
-                         const std::vector<std::vector<float>>& capture, Eigen::VectorXd* leave) {
-    const size_t n = size_t(chain.rows());
+//! Σ_g w_g S(g) diag(capture_g), the part of the chain that leaves through
+//! the holes (the system is base + ρ · this); `leave` (if not null) receives
+//! its row sums r.
+SparseMatrix captured_part(const std::vector<OrientationFlow>& turns, size_t n,
+                           const std::vector<std::vector<float>>& capture, Eigen::VectorXd* leave) {
     const double weight = 1.0 / double(turns.size());
     if (leave) *leave = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
     std::vector<Eigen::Triplet<double>> removed;
@@ -65,11 +117,9 @@ SparseMatrix turn_system(const std::vector<OrientationFlow>& turns, const Sparse
                 removed.emplace_back(int(i), int(settle.column[e]), w);
             }
     }
-    SparseMatrix captured_part(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    captured_part.setFromTriplets(removed.begin(), removed.end());
-    SparseMatrix identity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    identity.setIdentity();
-    return identity - effort * (chain - captured_part);
+    SparseMatrix part(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    part.setFromTriplets(removed.begin(), removed.end());
+    return part;
 }
 
 }  // namespace
@@ -114,9 +164,12 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
         for (size_t i = 0; i < n; ++i)
             for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e)
                 entries.emplace_back(int(i), int(flow.settle.column[e]), weight * flow.settle.weight[e]);
+    for (auto& entry : entries) entry = {entry.row(), entry.col(), -options.effort * entry.value()};
+    for (size_t i = 0; i < n; ++i) entries.emplace_back(int(i), int(i), 1.0);
     auto chain = std::make_shared<TurnChain>();
-    chain->matrix.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    chain->matrix.setFromTriplets(entries.begin(), entries.end());
+    chain->base.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    chain->base.setFromTriplets(entries.begin(), entries.end());
+    chain->base_transposed = chain->base.transpose();
     chain_ = std::move(chain);
 }
 
@@ -177,7 +230,7 @@ std::vector<std::vector<double>> DrainabilityModel::pool_volumes(const std::vect
 }
 
 double DrainabilityModel::pool_drain_fraction(size_t turn, size_t basin_index, double volume,
-                                              const std::vector<const DrainHole*>& holes) const {
+                                              const std::vector<const DrainHole*>& holes, size_t max_probes) const {
     const Basin& basin = turn_basins_[turn][basin_index];
     const size_t count = basin.patch.size();
     if (count == 0 || holes.empty()) return 0.0;
@@ -198,16 +251,19 @@ double DrainabilityModel::pool_drain_fraction(size_t turn, size_t basin_index, d
         held += room;
         level = next;
     }
-    // What the cones keep: per wet patch, the pool up to the lowest cone.
+    // What the cones keep: per wet patch, the pool up to the lowest cone
+    // (every `stride`-th wet patch, standing for its neighbours in height).
     const Vec3& gravity = turns_[turn].gravity;
-    double kept = 0.0;
-    for (size_t w = 0; w < wet; ++w) {
+    const size_t stride = max_probes > 0 ? (wet + max_probes - 1) / max_probes : 1;
+    double kept = 0.0, probed_depth = 0.0;
+    for (size_t w = 0; w < wet; w += stride) {
         double top = level;
         for (const DrainHole* hole : holes)
             top = std::min(top, cone_height(*hole, patches_.site[basin.patch[w]], gravity));
         kept += basin.horizontal_area[w] * std::max(0.0, top - basin.height[w]);
+        probed_depth += basin.horizontal_area[w] * (level - basin.height[w]);
     }
-    return std::clamp(1.0 - kept / volume, 0.0, 1.0);
+    return probed_depth > 0.0 ? std::clamp(1.0 - kept / probed_depth, 0.0, 1.0) : 0.0;
 }
 
 std::vector<std::vector<float>> DrainabilityModel::turn_capture(
@@ -225,7 +281,7 @@ std::vector<std::vector<float>> DrainabilityModel::turn_capture(
             std::vector<const DrainHole*> together;
             while (b < drained.size() && drained[b].first == drained[a].first) together.push_back(drained[b++].second);
             const size_t basin = size_t(drained[a].first);
-            const float fraction = float(pool_drain_fraction(k, basin, pools[k][basin], together));
+            const float fraction = float(pool_drain_fraction(k, basin, pools[k][basin], together, 0));
             for (uint32_t j : turn_region_members_[k][basin]) capture[k][j] = fraction;
             a = b;
         }
@@ -249,9 +305,9 @@ DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes)
     }
 
     Eigen::VectorXd leave;
-    const SparseMatrix system = turn_system(turns_, chain_->matrix, options_.effort,
-                                            turn_capture(holes, pool_volumes(result.retained_mass)), &leave);
-    const Eigen::VectorXd d = solve(system, options_.effort * leave);
+    const SparseMatrix captured =
+        captured_part(turns_, n, turn_capture(holes, pool_volumes(result.retained_mass)), &leave);
+    const Eigen::VectorXd d = solve(chain_->base, captured, options_.effort, options_.effort * leave);
 
     result.drainability.resize(n);
     result.residual_per_cavity.assign(patches_.cavity_count, 0.0);
@@ -274,11 +330,11 @@ std::vector<double> DrainabilityModel::estimate_gains(const std::vector<DrainHol
     const double rho = options_.effort;
 
     // Expected discounted presence u = (I − ρQ)^-T m' of the retained powder.
-    const SparseMatrix transposed =
-        SparseMatrix(turn_system(turns_, chain_->matrix, options_.effort, capture, nullptr).transpose());
     Eigen::VectorXd retained(static_cast<Eigen::Index>(n));
     for (size_t j = 0; j < n; ++j) retained[int(j)] = current.retained_mass[j];
-    const Eigen::VectorXd presence = solve(transposed, retained);
+    const Eigen::VectorXd presence =
+        solve(chain_->base_transposed, SparseMatrix(captured_part(turns_, n, capture, nullptr).transpose()),
+              options_.effort, retained);
 
     // Per turn orientation and basin: the powder arriving there in a turn
     // times its chance of staying otherwise, and the holes draining it.
@@ -301,13 +357,27 @@ std::vector<double> DrainabilityModel::estimate_gains(const std::vector<DrainHol
         }
     });
 
+    // First-turn powder still in the part, per basin of the printing
+    // orientation: at most kGainSamples samples each, standing for the rest.
+    std::vector<std::vector<uint32_t>> undrained(first_region_samples_.size());
+    std::vector<double> undrained_weight(first_region_samples_.size(), 0.0);
+    for (size_t region = 0; region < first_region_samples_.size(); ++region) {
+        std::vector<uint32_t> all;
+        for (uint32_t s : first_region_samples_[region])
+            if (!current.drained_first[s]) all.push_back(s);
+        const size_t stride = (all.size() + kGainSamples - 1) / kGainSamples;
+        for (size_t e = 0; e < all.size(); e += std::max<size_t>(stride, 1)) undrained[region].push_back(all[e]);
+        undrained_weight[region] = powder_.sample_volume * double(std::max<size_t>(stride, 1));
+    }
+
     std::vector<double> gains(candidates.size(), 0.0);
     tbb::parallel_for(size_t(0), candidates.size(), [&](size_t c) {
         double gain = 0.0;
-        for_each_first_turn_sample(candidates[c], [&](uint32_t s) {
-            if (!current.drained_first[s])
-                gain += powder_.sample_volume * (1.0 - current.drainability[powder_.rest_patch[s]]);
-        });
+        const int32_t first_basin = drained_basin(candidates[c], first_);
+        if (first_basin >= 0)
+            for (uint32_t s : undrained[size_t(first_basin)])
+                if (above_cone(candidates[c], powder_.position[s], first_.gravity))
+                    gain += undrained_weight[size_t(first_basin)] * (1.0 - current.drainability[powder_.rest_patch[s]]);
         for (size_t k = 0; k < turns_.size(); ++k) {
             const int32_t basin = drained_basin(candidates[c], turns_[k]);
             if (basin < 0 || arrival_value[k][size_t(basin)] <= 0.0) continue;
@@ -315,7 +385,8 @@ std::vector<double> DrainabilityModel::estimate_gains(const std::vector<DrainHol
             const double before =
                 together.empty() ? 0.0 : capture[k][turn_region_members_[k][size_t(basin)].front()];
             together.push_back(&candidates[c]);
-            const double after = pool_drain_fraction(k, size_t(basin), pools[k][size_t(basin)], together);
+            const double after =
+                pool_drain_fraction(k, size_t(basin), pools[k][size_t(basin)], together, kGainProbes);
             gain += std::max(0.0, after - before) * arrival_value[k][size_t(basin)];
         }
         gains[c] = gain;

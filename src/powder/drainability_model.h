@@ -94,9 +94,10 @@ private:
     //! the first turn, moved by S(g).
     std::vector<std::vector<double>> pool_volumes(const std::vector<double>& retained_mass) const;
     //! Fraction of a pool of `volume` in basin `basin` of turn `turn` that
-    //! lies above the cone of at least one of `holes`.
+    //! lies above the cone of at least one of `holes`, measured on every wet
+    //! patch (max_probes 0) or on about `max_probes` of them spread in height.
     double pool_drain_fraction(size_t turn, size_t basin, double volume,
-                               const std::vector<const DrainHole*>& holes) const;
+                               const std::vector<const DrainHole*>& holes, size_t max_probes) const;
     //! Leaving fraction per patch per turn orientation for a hole set.
     std::vector<std::vector<float>> turn_capture(const std::vector<DrainHole>& holes,
                                                  const std::vector<std::vector<double>>& pools) const;
@@ -116,7 +117,7 @@ private:
     std::vector<std::vector<Basin>> turn_basins_;
     //! Powder samples per first-orientation floor region.
     std::vector<std::vector<uint32_t>> first_region_samples_;
-    //! Σ_g w_g S(g), the turn chain without holes (Eigen, defined in the .cpp).
+    //! I − ρ Σ_g w_g S(g), the turn chain without holes (Eigen, defined in the .cpp).
     struct TurnChain;
     std::shared_ptr<const TurnChain> chain_;
 };

@@ -11,7 +11,7 @@
 //! staircase drawn at exactly the angle stays; the ground seen ahead falls
 //! away at most one cell per step, so a pit or cliff a few cells away does
 //! not pull a grain resting on flat ground). Grains that reach the outside are
-//! //! gone. Between turns the grains keep their world positions. Reports the
+//! gone. Between turns the grains keep their world positions. Reports the
 //! powder left inside after each turn. Cancellable (Error(CANCELLED)).
 #pragma once
 
