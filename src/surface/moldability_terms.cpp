@@ -163,6 +163,10 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
         if (overlap_lo_x > std::min(ba.hi[0], bb.hi[0]) || overlap_lo_y > std::min(ba.hi[1], bb.hi[1])) return;
         if (cell_of(overlap_lo_x, 0) != i || cell_of(overlap_lo_y, 1) != j) return;
         if (dot(shell.normal[a], axis) * dot(shell.normal[b], axis) < 0) return;
+        // Edge neighbours facing alike project to opposite sides of their
+        // shared edge (they run it in opposite senses): no common area.
+        const auto& around = shell.neighbor[a];
+        if (around[0] == int(b) || around[1] == int(b) || around[2] == int(b)) return;
         const double shared = intersection_area(projected[a], projected[b]);
         if (shared <= tiny) return;
         found.push_back({a, b, float(shared * area_scale)});
