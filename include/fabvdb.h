@@ -422,7 +422,7 @@ typedef struct fabvdb_powder_options {
     double first_gravity[3];     /* the routine's first turn; default 0 0 -1 */
     int turns;                   /* turns of the routine, the first included; default 10 */
     uint64_t seed;               /* draws the later turns from the orientations; default 1 */
-    int slope_window;            /* cells over which a pile's slope is measured; default 4 */
+    int slope_window;            /* cells over which a pile's slope is measured, 1 to 16; default 4 */
 } fabvdb_powder_options;
 
 /* Fills *options with the defaults above. NULL does nothing. Thread-safe. (since 0.1) */

@@ -20,13 +20,28 @@ static const cli_option options[] = {
     {"--orientations", 0, CLI_STRING, "all|FILE", "all",
      "gravity directions the operator turns the part to: all = 162 icosphere directions, or a file of \"x y z\" lines"},
     {"--effort", 0, CLI_NUMBER, "RHO", "0.9", "chance the operator turns the part once more (about 1/(1-RHO) turns)"},
-    {"--target", 0, CLI_NUMBER, "FRACTION", "0.01", "automatic mode: stop adding holes under this residual fraction"},
+    {"--target", 0, CLI_STRING, "PCT", "1%",
+     "automatic mode: stop adding holes once the predicted residual is under this share of the cavity (1% or 0.01)"},
     {"--keep-out", 0, CLI_STRING, "FILE", NULL, "no hole here: a JSON file of spheres or a closed mesh"},
     {"--heatmap", 0, CLI_STRING, "HEAT.ply", NULL, "write the cavity surface coloured by drainability"},
     {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size of the level sets (default: wall / 4)"},
     {"--patches", 0, CLI_INT, "N", "2000", "cavity surface patches of the drainability model"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb drain')"},
 };
+
+/* A share of the cavity: "1%" or "0.01" (both 0.01); false unless in [0, 1). */
+static int parse_share(const char* text, double* share) {
+    char* end = NULL;
+    double value = strtod(text, &end);
+    if (end == text) return 0;
+    if (*end == '%') {
+        value /= 100.0;
+        ++end;
+    }
+    if (*end != '\0' || !(value >= 0.0 && value < 1.0)) return 0;
+    *share = value;
+    return 1;
+}
 
 static int run_drain(cli_run* run) {
     const cli_value* output = cli_get(run, "--output");
@@ -42,13 +57,12 @@ static int run_drain(cli_run* run) {
     }
     drain.repose_degrees = cli_get(run, "--repose")->number;
     drain.effort = cli_get(run, "--effort")->number;
-    drain.target_residual = cli_get(run, "--target")->number;
+    if (!parse_share(cli_get(run, "--target")->text, &drain.target_residual))
+        return cli_usage_error(run, "--target takes a percentage (1%) or a fraction (0.01) in [0, 1)");
     drain.patch_count = (int)cli_get(run, "--patches")->number;
     if (!(drain.repose_degrees > 0.0 && drain.repose_degrees < 90.0))
         return cli_usage_error(run, "--repose must be between 0 and 90 degrees");
     if (!(drain.effort >= 0.0 && drain.effort < 1.0)) return cli_usage_error(run, "--effort must be in [0, 1)");
-    if (!(drain.target_residual >= 0.0 && drain.target_residual < 1.0))
-        return cli_usage_error(run, "--target must be a fraction in [0, 1)");
     if (drain.patch_count < 10) return cli_usage_error(run, "--patches must be at least 10");
     drain.keep_out_path = cli_get(run, "--keep-out")->set ? cli_get(run, "--keep-out")->text : NULL;
     drain.heatmap_path = cli_get(run, "--heatmap")->set ? cli_get(run, "--heatmap")->text : NULL;

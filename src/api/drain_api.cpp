@@ -205,9 +205,10 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
             o = *options;
         }
         if (!(o.repose_degrees > 0.0 && o.repose_degrees < 90.0) || o.turns < 1 || o.slope_window < 1 ||
+            o.slope_window > 16 ||
             !(o.voxel_size >= 0.0))
             throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT,
-                                "powder options out of range (0 < repose < 90, turns >= 1, slope window >= 1, "
+                                "powder options out of range (0 < repose < 90, turns >= 1, 1 <= slope window <= 16, "
                                 "voxel size >= 0)");
         const std::vector<fabvdb::powder::SandpileHole> holes = parse_holes(holes_json_text);
         fabvdb::validate_mesh(part->mesh, "part");

@@ -2,7 +2,8 @@
 # fabvdb drain and powder-sim end to end on the shared sphere mesh: the drilled
 # part is written, the report lists holes with the documented keys, the heat
 # map is a binary PLY with colours and quality, the simulation reads the
-# report; bad inputs give exit code 2 and leave no output.
+# report; --target takes a percentage; bad inputs give exit code 2 (bad
+# options 1) and leave no output.
 set -u
 fabvdb="$1"; data="$2"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
@@ -25,6 +26,10 @@ grep -q '"residual_fraction"' "$work/s.json" || fail "simulation report lacks re
 echo '{"holes": [{"center": [0, 0]}]}' > "$work/bad.json"
 "$fabvdb" powder-sim "$work/out.stl" --holes "$work/bad.json" --quiet 2>/dev/null
 [ $? -eq 2 ] || fail "bad holes JSON: expected exit 2"
+"$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --target 150% --quiet 2>/dev/null
+[ $? -eq 1 ] || fail "--target 150%: expected exit 1"
+"$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --target 1x --quiet 2>/dev/null
+[ $? -eq 1 ] || fail "--target 1x: expected exit 1"
 "$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --keep-out "$work/missing.json" --quiet 2>/dev/null
 [ $? -eq 2 ] || fail "missing keep-out: expected exit 2"
 [ ! -e "$work/never.stl" ] || fail "a failed drain left an output"
