@@ -43,8 +43,9 @@ Solid validated_solid(const Mesh& mesh, const std::string& name) {
 }
 
 // Rounds the exact result to doubles. Points closer than double precision
-// can round to one position, leaving degenerate triangles: they are
-// collapsed away (CGAL remove_degenerate_faces) before the export.
+// can round to one position, leaving degenerate triangles, and points a
+// hair apart make needles: both are collapsed away (CGAL
+// remove_degenerate_faces, remove_almost_degenerate_faces) before the export.
 Mesh to_mesh(const Solid& solid) {
     using Rounded = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
     Rounded rounded;
@@ -60,6 +61,10 @@ Mesh to_mesh(const Solid& solid) {
             throw Error(FABVDB_ERR_INTERNAL, "boolean result is not a triangle surface");
     }
     PMP::remove_degenerate_faces(rounded);
+    // Needles whose shortest edge is under a ten-thousandth of a millimetre
+    // (points rounding left nearly coincident, which a float STL file would
+    // merge into a degenerate triangle) are collapsed; caps are left alone.
+    PMP::experimental::remove_almost_degenerate_faces(rounded, -1.0, 1e3, 1e-4);
     rounded.collect_garbage();
     Mesh mesh;
     for (Rounded::Vertex_index v : rounded.vertices()) {

@@ -2,12 +2,12 @@
 //! exact constructions (Epeck): a first solid combined with a sequence of
 //! others (union, difference, intersection), the intermediate results kept
 //! exact, rounded to doubles once at the end (triangles that rounding makes
-//! degenerate are collapsed away). Every input is validated first
-//! (a 2-manifold surface, closed, not self-intersecting, facing outward,
-//! bounding a volume);
-//! a defect throws Error(BAD_INPUT) naming the input and the defect. The result
-//! is closed and 2-manifold (CGAL refuses otherwise: Error(BAD_INPUT) naming
-//! the step). Checks cancellation between steps.
+//! degenerate, and needles with an edge under 1e-4 mm, are collapsed away).
+//! Every input is validated first (a 2-manifold surface, closed, not
+//! self-intersecting, facing outward, bounding a volume); a defect throws
+//! Error(BAD_INPUT) naming the input and the defect. The result is closed and
+//! 2-manifold (CGAL refuses otherwise: Error(BAD_INPUT) naming the step).
+//! Checks cancellation between steps.
 #pragma once
 
 #include <string>

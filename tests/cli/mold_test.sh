@@ -17,6 +17,8 @@ done
 for f in "$WORK"/sphere/parts/*.stl "$WORK"/sphere/molds/*.stl; do
   expect_exit 0 "$FABVDB" info "$f"
   expect_match "$STDOUT" 'closed (watertight) *yes'
+  expect_match "$STDOUT" 'non-manifold edges *0'
+  expect_match "$STDOUT" 'degenerate triangles *0'
   expect_match "$STDOUT" 'self-intersecting pairs *0'
 done
 expect_match "$(cat "$WORK/r.json")" '"hausdorff_ratio"'
@@ -28,12 +30,11 @@ expect_match "$STDOUT" '^2 parts'
 
 expect_exit 0 "$FABVDB" mold "$SOURCE/data/sphere.obj" --fit 40mm -o "$WORK/common" --decomposition "$D" \
   --common-mold "${COARSE[@]}" --report "$WORK/c.json"
-# (Common molds of generated parts can still carry a few degenerate
-# triangles from rounding the exact booleans: a known defect, so only their
-# presence is checked here; tests/surface/mold_assembly_test.cpp checks a
-# common mold fully.)
 for f in common_top.stl common_bottom.stl; do
   expect_exit 0 "$FABVDB" info "$WORK/common/molds/$f"
+  expect_match "$STDOUT" 'closed (watertight) *yes'
+  expect_match "$STDOUT" 'degenerate triangles *0'
+  expect_match "$STDOUT" 'self-intersecting pairs *0'
 done
 expect_match "$(cat "$WORK/c.json")" '"common_mold_offset"'
 
