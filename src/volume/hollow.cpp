@@ -7,7 +7,7 @@
 #include <cmath>
 #include <sstream>
 
-#include <openvdb/tools/LevelSetRebuild.h>
+#include <openvdb/tools/FastSweeping.h>
 #include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/ValueTransformer.h>
 
@@ -17,6 +17,7 @@
 #include "volume/extract_mesh.h"
 #include "volume/memory_estimate.h"
 #include "volume/progress_interrupter.h"
+#include "volume/repair.h"
 #include "volume/signed_distance.h"
 #include "volume/snap_to_offset.h"
 #include "volume/surfaces_disjoint.h"
@@ -162,11 +163,11 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
         clock.lap("check input");
     } else {
         clock.lap("check input");
-        SignedDistanceOptions repair;
-        repair.voxel_size = voxel;
-        repair.memory_budget_bytes = options.memory_budget_bytes;
-        repair.input_name = options.input_name;
-        outer = extract_mesh(*signed_distance_from_mesh(input, repair, progress), 0.0, progress);
+        RepairOptions repair_options;
+        repair_options.distance.voxel_size = voxel;
+        repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
+        repair_options.distance.input_name = options.input_name;
+        outer = repair(input, repair_options, progress).mesh;
         clock.lap("repair");
     }
     result.volume_solid = signed_volume(outer);
@@ -188,9 +189,7 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     progress.stage("cavity offset");
     openvdb::FloatGrid::Ptr cavity;
     if (options.closing > 0.0) {
-        ProgressInterrupter interrupter(progress);
-        openvdb::FloatGrid::Ptr core = openvdb::tools::levelSetRebuild(
-            *solid.distance, float(-depth), float(options.closing / voxel + 3.0), 3.0f, nullptr, &interrupter);
+        openvdb::FloatGrid::Ptr core = openvdb::tools::sdfToSdf(*solid.distance, float(-depth));
         progress.check();
         cavity = shifted(*core, float(-options.closing));
     } else {

@@ -111,15 +111,13 @@ std::vector<double> wall_samples(const Inspected& shells) {
 }
 
 //! Closed shells; the cavity crosses neither itself nor the outer surface;
-//! and, when the outer surface is the input's own (clean) one, nothing
-//! crosses at all. (A repaired outer surface is the repair's extraction,
-//! checked by its own tests.)
-void expect_valid_shells(const Inspected& shells, const std::string& what, bool outer_is_input = true) {
+//! nothing crosses at all (a clean input's own surface or a repaired one).
+void expect_valid_shells(const Inspected& shells, const std::string& what) {
     EXPECT_TRUE(shells.manifold) << what;
     EXPECT_TRUE(shells.closed) << what;
     EXPECT_FALSE(shells.cavity_self_intersecting) << what;
     EXPECT_FALSE(shells.cavity_touches_outer) << what;
-    if (outer_is_input) EXPECT_FALSE(shells.self_intersecting) << what;
+    EXPECT_FALSE(shells.self_intersecting) << what;
 }
 
 HollowOptions options_with(double wall, double voxel, double closing = 0.0) {
@@ -175,7 +173,7 @@ TEST(Hollow, ThinFinStaysSolidThickBodyIsHollow) {
     const HollowResult result = hollow(part, options_with(3.0, 0.5), progress);
     EXPECT_FALSE(result.outer_kept);  // two overlapping boxes are not a clean surface
     const Inspected shells = inspect(result.mesh);
-    expect_valid_shells(shells, "fin", result.outer_kept);
+    expect_valid_shells(shells, "fin");
     ASSERT_EQ(result.cavity_volumes.size(), 1u);
     EXPECT_GT(shells.cavity_volume, 0.8 * 24.0 * 24.0 * 24.0);
     for (const Triangle3& t : shells.cavity)
@@ -230,7 +228,7 @@ TEST(Hollow, SharedMeshesHollowIntoClosedDisjointShells) {
             const HollowResult result = hollow(mesh, options, progress);
             EXPECT_TRUE(expected == refused.end()) << name << " hollowed";
             const Inspected shells = inspect(result.mesh);
-            expect_valid_shells(shells, name, result.outer_kept);
+            expect_valid_shells(shells, name);
             if (!shells.cavity.empty()) EXPECT_GE(wall_samples(shells).front(), 1.5 - 0.75) << name;
             ++hollowed;
         } catch (const Error& e) {
