@@ -45,9 +45,9 @@ bool same_cycle(const Triangle& t, const Triangle& u) {
 }
 
 // A piece that the input oriented inward (by the area of its triangles whose
-// input order disagrees with the outward one) and that lies inside the solid
-// of the outward pieces (their winding number at one of its points) is the
-// wall of a cavity: it is turned back inward. Other pieces stay outward.
+// input order disagrees with the outward one) and that lies wholly inside the
+// solid of the outward pieces (their winding number at each of its points) is
+// the wall of a cavity: it is turned back inward. Other pieces stay outward.
 void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_t>& parent) {
     const auto position_key = [](const Vec3& p) {
         return std::hash<double>()(p[0]) * 0x9E3779B97F4A7C15ull ^ std::hash<double>()(p[1]) * 0xC2B2AE3D27D4EB4Full ^
@@ -74,40 +74,43 @@ void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_
     }
 
     std::unordered_map<uint32_t, std::array<double, 2>> agreement;  // root -> {agreeing area, total area}
-    std::unordered_map<uint32_t, std::pair<double, Vec3>> sample;     // root -> largest triangle's centroid
     for (const Triangle& t : oriented.triangles) {
         const Vec3 &a = oriented.vertices[t[0]], &b = oriented.vertices[t[1]], &c = oriented.vertices[t[2]];
         const Vec3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         const double area = std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) +
                                       std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
                                       std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
-        const uint32_t root = find_root(parent, t[0]);
-        auto& [agreeing, total] = agreement[root];
+        auto& [agreeing, total] = agreement[find_root(parent, t[0])];
         total += area;
         const auto it = input_order.find(sorted_corners(t));
         if (it != input_order.end() && same_cycle(t, it->second)) agreeing += area;
-        auto& best = sample[root];
-        if (area > best.first)
-            best = {area, Vec3{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3}};
     }
 
     std::vector<uint32_t> inward_roots;
+    for (const auto& [root, area] : agreement)
+        if (area[0] < 0.5 * area[1]) inward_roots.push_back(root);
+    if (inward_roots.empty()) return;
+    const auto is_inward = [&](uint32_t root) {
+        return std::find(inward_roots.begin(), inward_roots.end(), root) != inward_roots.end();
+    };
     Mesh outward;
     outward.vertices = oriented.vertices;
-    for (const auto& [root, area] : agreement) {
-        if (area[0] < 0.5 * area[1]) inward_roots.push_back(root);
-    }
-    if (inward_roots.empty()) return;
-    for (const Triangle& t : oriented.triangles) {
-        const uint32_t root = find_root(parent, t[0]);
-        if (std::find(inward_roots.begin(), inward_roots.end(), root) == inward_roots.end())
-            outward.triangles.push_back(t);
-    }
+    for (const Triangle& t : oriented.triangles)
+        if (!is_inward(find_root(parent, t[0]))) outward.triangles.push_back(t);
     if (outward.triangles.empty()) return;
+
+    // A cavity lies wholly inside: every one of its points (a piece that only
+    // overlaps the solid is an inverted solid of its own, to be united).
     const WindingNumber solid(outward);
+    std::unordered_map<uint32_t, bool> enclosed;
+    for (uint32_t root : inward_roots) enclosed[root] = true;
+    for (uint32_t v = 0; v < oriented.vertices.size(); ++v) {
+        const auto it = enclosed.find(find_root(parent, v));
+        if (it != enclosed.end() && it->second && solid(oriented.vertices[v]) < 0.5) it->second = false;
+    }
     std::vector<uint32_t> cavity_roots;
-    for (uint32_t root : inward_roots)
-        if (solid(sample[root].second) >= 0.5) cavity_roots.push_back(root);
+    for (const auto& [root, inside] : enclosed)
+        if (inside) cavity_roots.push_back(root);
     for (Triangle& t : oriented.triangles)
         if (std::find(cavity_roots.begin(), cavity_roots.end(), find_root(parent, t[0])) != cavity_roots.end())
             std::swap(t[1], t[2]);

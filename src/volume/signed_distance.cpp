@@ -114,7 +114,8 @@ Vec3 world_position(const openvdb::math::Transform& transform, const openvdb::Co
 
 // A signed narrow band is a distance field of its zero surface only if every
 // sign change between face neighbours is a crossing (|a| + |b| <= ~h) and
-// every voxel within h/2 of the surface has a neighbour across it.
+// every voxel within h/2 of a triangle has a neighbour across it (else the
+// triangle lies inside the solid: an overlapping shell or an inner fin).
 bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel) {
     std::atomic<bool> consistent{true};
     openvdb::tree::LeafManager<const openvdb::FloatTree> leaves(grid.tree());
@@ -134,7 +135,16 @@ bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel) {
                         crossing = true;
                         if (std::abs(a) + std::abs(b) > 1.5 * voxel) consistent = false;
                     }
-                if (!crossing && std::abs(a) < 0.5 * voxel) consistent = false;
+                if (crossing || std::abs(a) >= 0.5 * voxel) continue;
+                // Near a sharp edge or a thin part the surface may pass a voxel
+                // diagonally: a crossing to any of the 26 neighbours will do.
+                for (int dx = -1; dx <= 1 && !crossing; ++dx)
+                    for (int dy = -1; dy <= 1 && !crossing; ++dy)
+                        for (int dz = -1; dz <= 1 && !crossing; ++dz) {
+                            float b;
+                            crossing = accessor.probeValue(ijk.offsetBy(dx, dy, dz), b) && (a < 0) != (b < 0);
+                        }
+                if (!crossing) consistent = false;
             }
         }
     });
@@ -280,12 +290,15 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         StageClock clock(stats, progress, "winding number");
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
         band_winding.assign(leaves.leafCount() * size_t(leaf_size), 0.0f);
+        const float smallest_distance = float(1e-6 * voxel);
         for_each_index(leaves.leafCount(), progress, [&](size_t i) {
             uint64_t inside = 0;
             for (auto voxel_it = leaves.leaf(i).beginValueOn(); voxel_it; ++voxel_it) {
                 const double w = (*winding)(world_position(*transform, voxel_it.getCoord()));
                 band_winding[i * leaf_size + voxel_it.pos()] = float(w);
-                if (w >= inside_threshold) voxel_it.setValue(-*voxel_it);
+                // Inside values are strictly negative, also on a triangle
+                // (-0.0 would read as outside in every sign test).
+                if (w >= inside_threshold) voxel_it.setValue(-std::max(*voxel_it, smallest_distance));
                 if (w >= clearly_inside) ++inside;
             }
             clearly_inside_voxels += inside;
