@@ -231,8 +231,11 @@ std::vector<int> ranked_candidates(const Shell& shell, const MoldabilityTerms& t
         const Vec3& dir = terms.directions.directions[d];
         if (!(terms.axes[axis] == dir)) continue;
         double e = 0;
+        // The lesser overhang is zero unless the triangle is within the draft
+        // angle of parallel to the axis (|n·d| < sin φ).
+        const double within_draft = std::sin(terms.draft);
         for (size_t i = 0; i < surface.size(); ++i)
-            if (surface.kind[i] != PartSurface::inner)
+            if (surface.kind[i] != PartSurface::inner && std::abs(dot(surface.normal[i], dir)) < within_draft)
                 e += std::min(overhang_term(surface.normal[i], surface.area[i], dir, terms.draft),
                               overhang_term(surface.normal[i], surface.area[i], -1.0 * dir, terms.draft));
         const auto& o = terms.overlaps[axis];
