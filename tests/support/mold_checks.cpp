@@ -175,7 +175,7 @@ void check_two_piece_mold(const Mesh& part, const Vec3& d, const TwoPieceMold& m
         << "void " << void_volume << " channels " << channel_volume;
 
     // The void is one connected region, open to the outside through the sprue.
-    const int m = 56;
+    const int m = 80;
     std::vector<char> empty(size_t(m) * m * m, 0);
     size_t empty_count = 0;
     for (int i = 0; i < m; ++i)
