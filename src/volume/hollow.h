@@ -1,16 +1,17 @@
 //! Hollowing for printing: keeps a wall of thickness `wall` under the outer
-//! surface and empties the rest. The input may be dirty (it is repaired
-//! through the robust signed distance first); a clean closed input keeps its
-//! own outer triangles. The cavity is the interior offset by −wall (opened by
-//! the closing distance like PrusaSlicer's: offset by −(wall + closing), then
-//! by +closing), extracted from a narrow band whose interior reaches that
-//! depth, its vertices snapped to the exact offset of the outer triangles.
+//! surface and empties the rest. The input may be dirty (it then goes through
+//! the repair pipeline, repair.h, whose surface is clean); a clean closed
+//! input keeps its own outer triangles. The cavity is the interior offset by
+//! −wall (opened by the closing distance like PrusaSlicer's: offset by
+//! −(wall + closing), the core's distance rebuilt by fast sweeping, then by
+//! +closing), extracted from a narrow band whose interior reaches that depth,
+//! its vertices snapped to the exact offset of the outer triangles.
 //! Guarantees: outer shells face out, cavity shells face in, every shell is
 //! closed and no cavity triangle touches the outer surface (checked exactly);
 //! regions thinner than 2·wall stay solid; voids under `min_cavity_volume`
 //! are filled. An optional gyroid strut infill is carved out of the cavity
-//! (see gyroid_infill.h) before extraction. Cancellable; the
-//! memory budget is checked before any grid is built.
+//! (see gyroid_infill.h) before extraction. Cancellable; the memory budget is
+//! checked before any grid is built.
 #pragma once
 
 #include <cstdint>
