@@ -105,10 +105,15 @@ double deepest(const openvdb::FloatGrid& grid) {
     return -double(lowest);
 }
 
+//! The radius the cavity is opened by: the closing distance, at least one
+//! voxel, so void slivers thinner than two voxels are dropped (the part stays
+//! solid there) and every remaining cavity vertex can take the exact wall.
+double cavity_opening(const HollowOptions& o, double voxel) { return std::max(o.closing, voxel); }
+
 void check_budget(const Mesh& outer, const HollowOptions& o, double voxel) {
     if (o.memory_budget_bytes == 0) return;
     const double area = surface_area(outer);
-    const int half_band = int(std::ceil(0.5 * ((o.wall + o.closing) / voxel + 5.0)));
+    const int half_band = int(std::ceil(0.5 * ((o.wall + cavity_opening(o, voxel)) / voxel + 5.0)));
     uint64_t bytes = estimate_level_set_bytes(area, voxel, half_band);
     if (o.infill.cell > 0.0) {
         const BoundingBox box = bounding_box(outer);
@@ -173,7 +178,8 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     result.volume_solid = signed_volume(outer);
 
     // Distances down to the deepest iso-surface the cavity needs.
-    const double depth = options.wall + options.closing;
+    const double opening = cavity_opening(options, voxel);
+    const double depth = options.wall + opening;
     const SolidDistance solid = solid_distance(outer, voxel, depth, progress);
     clock.lap("interior distance");
     const double thickest = deepest(*solid.distance);
@@ -185,16 +191,11 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, message.str());
     }
 
-    // The cavity: offset by -wall, or opened by the closing distance.
+    // The cavity: the core at -(wall + opening), its distance rebuilt by fast
+    // sweeping, grown back by the opening.
     progress.stage("cavity offset");
-    openvdb::FloatGrid::Ptr cavity;
-    if (options.closing > 0.0) {
-        openvdb::FloatGrid::Ptr core = openvdb::tools::sdfToSdf(*solid.distance, float(-depth));
-        progress.check();
-        cavity = shifted(*core, float(-options.closing));
-    } else {
-        cavity = shifted(*solid.distance, float(options.wall));
-    }
+    openvdb::FloatGrid::Ptr cavity = shifted(*openvdb::tools::sdfToSdf(*solid.distance, float(-depth)), float(-opening));
+    progress.check();
     clock.lap("cavity offset");
     if (options.infill.cell > 0.0) {
         cavity = carve_gyroid_struts(*cavity, options.infill, progress);

@@ -2,14 +2,16 @@
 //! surface and empties the rest. The input may be dirty (it then goes through
 //! the repair pipeline, repair.h, whose surface is clean); a clean closed
 //! input keeps its own outer triangles. The cavity is the interior offset by
-//! −wall (opened by the closing distance like PrusaSlicer's: offset by
-//! −(wall + closing), the core's distance rebuilt by fast sweeping, then by
-//! +closing), extracted from a narrow band whose interior reaches that depth,
-//! its vertices snapped to the exact offset of the outer triangles.
+//! −wall, opened by the closing distance like PrusaSlicer's, and at least by
+//! one voxel (offset by −(wall + opening), the core's distance rebuilt by fast
+//! sweeping, then by +opening): void slivers thinner than two voxels, whose
+//! two sides could not both be snapped, are dropped. It is extracted from a
+//! narrow band whose interior reaches that depth, its vertices snapped to the
+//! exact offset of the outer triangles.
 //! Guarantees: outer shells face out, cavity shells face in, every shell is
 //! closed and no cavity triangle touches the outer surface (checked exactly);
-//! regions thinner than 2·wall stay solid; voids under `min_cavity_volume`
-//! are filled. An optional gyroid strut infill is carved out of the cavity
+//! regions thinner than 2·(wall + opening) stay solid; voids under
+//! `min_cavity_volume` are filled. An optional gyroid strut infill is carved out of the cavity
 //! (see gyroid_infill.h) before extraction. Cancellable; the memory budget is
 //! checked before any grid is built.
 #pragma once

@@ -196,6 +196,42 @@ TEST(Hollow, SmallCavitiesAreFilled) {
     for (const Triangle3& t : shells.cavity) EXPECT_LT(t[0].x(), 20.0);
 }
 
+//! A mesh file scaled so that the longest side of its triangles' bounding box
+//! is `size` mm (its low corner at the origin).
+Mesh read_fitted(const std::string& path, double size, Progress& progress) {
+    Mesh mesh = io::read_mesh(path, progress);
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (const Triangle& t : mesh.triangles)
+        for (uint32_t v : t)
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::min(lo[k], mesh.vertices[v][k]);
+                hi[k] = std::max(hi[k], mesh.vertices[v][k]);
+            }
+    const double scale = size / std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    for (Vec3& p : mesh.vertices)
+        for (int k = 0; k < 3; ++k) p[k] = (p[k] - lo[k]) * scale;
+    return mesh;
+}
+
+// Parts a little over twice the wall thick (thin void slivers, whose two sides
+// cannot both take the exact wall) at the default voxel: the wall is never
+// thinner than 3 mm - 0.22 mm (PrusaSlicer's voxel) and its median is exact.
+TEST(Hollow, ThinPartsKeepTheFullWallAtClosingZero) {
+    for (const char* name : {"rocker-arm.obj", "fertility.off"}) {
+        Progress progress;
+        HollowOptions options = options_with(3.0, 0.0);
+        options.input_name = name;
+        const HollowResult result =
+            hollow(read_fitted(FABVDB_SHARED_DATA "/meshes/" + std::string(name), 60.0, progress), options, progress);
+        const Inspected shells = inspect(result.mesh);
+        expect_valid_shells(shells, name);
+        ASSERT_FALSE(shells.cavity.empty()) << name;
+        const std::vector<double> walls = wall_samples(shells);
+        EXPECT_GE(walls.front(), 3.0 - 0.22) << name;
+        EXPECT_NEAR(walls[walls.size() / 2], 3.0, 0.1) << name;
+    }
+}
+
 TEST(Hollow, SharedMeshesHollowIntoClosedDisjointShells) {
     const std::string folder = FABVDB_SHARED_DATA "/meshes/";
     // The refusals, with their reasons: triangles that enclose no volume, and
@@ -209,18 +245,8 @@ TEST(Hollow, SharedMeshesHollowIntoClosedDisjointShells) {
         const std::string name = entry.path().filename().string();
         if (entry.path().extension() == ".md") continue;
         Progress progress;
-        Mesh mesh = io::read_mesh(entry.path().string(), progress);
-        // Scale to 40 mm so one coarse setting fits all.
-        Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-        for (const Triangle& t : mesh.triangles)
-            for (uint32_t v : t)
-                for (int k = 0; k < 3; ++k) {
-                    lo[k] = std::min(lo[k], mesh.vertices[v][k]);
-                    hi[k] = std::max(hi[k], mesh.vertices[v][k]);
-                }
-        const double scale = 40.0 / std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-        for (Vec3& p : mesh.vertices)
-            for (int k = 0; k < 3; ++k) p[k] = (p[k] - lo[k]) * scale;
+        // Scaled to 40 mm so one coarse setting fits all.
+        const Mesh mesh = read_fitted(entry.path().string(), 40.0, progress);
         HollowOptions options = options_with(1.5, 0.75);
         options.input_name = name;
         const auto expected = refused.find(name);
