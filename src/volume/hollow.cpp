@@ -194,7 +194,8 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     // The cavity: the core at -(wall + opening), its distance rebuilt by fast
     // sweeping, grown back by the opening.
     progress.stage("cavity offset");
-    openvdb::FloatGrid::Ptr cavity = shifted(*openvdb::tools::sdfToSdf(*solid.distance, float(-depth)), float(-opening));
+    openvdb::FloatGrid::Ptr cavity =
+        shifted(*openvdb::tools::sdfToSdf(*solid.distance, float(-depth)), float(-opening));
     progress.check();
     clock.lap("cavity offset");
     if (options.infill.cell > 0.0) {
