@@ -102,7 +102,7 @@ void openvdb_floor(const fabvdb::Mesh& mesh, double voxel) {
     openvdb::initialize();
     auto transform = openvdb::math::Transform::createLinearTransform(voxel);
     std::vector<openvdb::Vec3s> points;
-    for (const auto& v : mesh.vertices) points.emplace_back(transform->worldToIndex(openvdb::Vec3d(v[0], v[1], v[2])));
+    for (const auto& v : mesh.vertices) points.emplace_back(float(v[0]), float(v[1]), float(v[2]));  // world space
     std::vector<openvdb::Vec3I> triangles;
     for (const auto& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
     std::vector<openvdb::Vec4I> quads;
