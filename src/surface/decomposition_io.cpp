@@ -5,16 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <map>
-#include <random>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include "core/atomic_folder.h"
 #include "core/error.h"
 #include "surface/moldability_energy.h"
 #include "surface/vec3_ops.h"
@@ -248,37 +247,15 @@ nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms
 void write_decomposition(const std::string& folder, const Mesh& input, const Shell& shell,
                          const MoldabilityTerms& terms, const Decomposition& decomposition,
                          const DecompositionOptions& options) {
-    namespace fs = std::filesystem;
-    const fs::path target = fs::path(folder).lexically_normal();
-    const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    std::error_code error;
-    if (!fs::is_directory(parent, error)) throw Error(FABVDB_ERR_IO, folder + ": the parent folder does not exist");
-    if (fs::exists(target, error) && !fs::is_directory(target, error))
-        throw Error(FABVDB_ERR_IO, folder + ": exists and is not a folder");
-    std::mt19937_64 random(std::random_device{}());
-    const std::string stem = target.filename().string();
-    const fs::path temporary = parent / ("." + stem + ".tmp-" + std::to_string(random() % 1000000000));
-    if (!fs::create_directory(temporary, error)) throw Error(FABVDB_ERR_IO, temporary.string() + ": cannot create");
-    try {
-        const std::string json_path = (temporary / "decomposition.json").string();
-        std::ofstream json(json_path);
-        json << decomposition_document(shell, terms, decomposition, options).dump(1) << "\n";
-        if (!json) throw Error(FABVDB_ERR_IO, json_path + ": write failed");
-        json.close();
-        write_parts_ply((temporary / "decomposition.ply").string(), input, shell, decomposition);
-        write_deformation_ply((temporary / "deformation.ply").string(), shell, terms, decomposition, options);
-        const fs::path old = parent / ("." + stem + ".old-" + std::to_string(random() % 1000000000));
-        const bool replacing = fs::exists(target, error);
-        if (replacing) fs::rename(target, old);
-        fs::rename(temporary, target);
-        if (replacing) fs::remove_all(old, error);
-    } catch (const fs::filesystem_error& e) {
-        fs::remove_all(temporary, error);
-        throw Error(FABVDB_ERR_IO, folder + ": " + e.what());
-    } catch (...) {
-        fs::remove_all(temporary, error);
-        throw;
-    }
+    AtomicFolder output(folder);
+    const std::string json_path = output.temp_path() + "/decomposition.json";
+    std::ofstream json(json_path);
+    json << decomposition_document(shell, terms, decomposition, options).dump(1) << "\n";
+    if (!json) throw Error(FABVDB_ERR_IO, json_path + ": write failed");
+    json.close();
+    write_parts_ply(output.temp_path() + "/decomposition.ply", input, shell, decomposition);
+    write_deformation_ply(output.temp_path() + "/deformation.ply", shell, terms, decomposition, options);
+    output.commit();
 }
 
 }  // namespace fabvdb::surface

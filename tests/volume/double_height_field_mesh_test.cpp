@@ -7,9 +7,8 @@
 
 #include <cmath>
 
-#include <openvdb/tools/MeshToVolume.h>
-
 #include "core/error.h"
+#include "support/plain_level_set.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 #include "volume/double_height_field_mesh.h"
@@ -19,15 +18,7 @@ namespace {
 
 using fabvdb::Mesh;
 using fabvdb::Vec3;
-
-openvdb::FloatGrid::Ptr level_set(const Mesh& mesh, double voxel) {
-    std::vector<openvdb::Vec3s> points;
-    std::vector<openvdb::Vec3I> triangles;
-    for (const Vec3& p : mesh.vertices) points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
-    for (const auto& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-    auto transform = openvdb::math::Transform::createLinearTransform(voxel);
-    return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles, 3.0f);
-}
+using fabvdb::test::plain_level_set;
 
 Mesh standing_ring() {
     Mesh ring = fabvdb::test::make_torus({0, 0, 0}, 10.0, 3.0, 48, 24);
@@ -56,7 +47,7 @@ TEST_P(DoubleHeightFieldMesh, SweptRingIsExact) {
     fabvdb::Progress progress;
     fabvdb::volume::SweepStats stats;
     const Mesh ring = standing_ring();
-    auto swept = fabvdb::volume::sweep_double_height_field(*level_set(ring, 0.4), d, {}, {}, progress, &stats);
+    auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.4), d, {}, {}, progress, &stats);
     const Mesh mesh = fabvdb::volume::double_height_field_mesh(*swept, progress);
     expect_exact_double_height_field(mesh, d);
     // Same solid as the level set (its volume measured by OpenVDB; the
@@ -80,8 +71,9 @@ TEST(DoubleHeightFieldMeshKeepOut, ColumnsWithTwoRunsKeepTheLongest) {
     // of different lengths; the mesh keeps the longer (lower) one.
     const Mesh box = fabvdb::test::make_box({-6, -6, -6}, {6, 6, 6});
     const Mesh slab = fabvdb::test::make_box({-3, -3, 1}, {3, 3, 3});
-    openvdb::FloatGrid::ConstPtr keep_out = level_set(slab, 0.4);
-    auto swept = fabvdb::volume::sweep_double_height_field(*level_set(box, 0.4), {0, 0, 1}, {keep_out}, {}, progress);
+    openvdb::FloatGrid::ConstPtr keep_out = plain_level_set(slab, 0.4);
+    auto swept =
+        fabvdb::volume::sweep_double_height_field(*plain_level_set(box, 0.4), {0, 0, 1}, {keep_out}, {}, progress);
     const Mesh mesh = fabvdb::volume::double_height_field_mesh(*swept, progress);
     expect_exact_double_height_field(mesh, {0, 0, 1});
     fabvdb::test::LineCaster caster(mesh, {0.01, 0.02, 1});
@@ -96,7 +88,7 @@ TEST(DoubleHeightFieldMeshErrors, EmptyGridIsBadInputAndCancelIsHonoured) {
     fabvdb::Progress progress;
     openvdb::FloatGrid empty;
     EXPECT_THROW(fabvdb::volume::double_height_field_mesh(empty, progress), fabvdb::Error);
-    auto swept = fabvdb::volume::sweep_double_height_field(*level_set(standing_ring(), 0.5), {0, 0, 1}, {}, {},
+    auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(standing_ring(), 0.5), {0, 0, 1}, {}, {},
                                                            progress);
     std::atomic<bool> cancel{true};
     fabvdb::Progress cancelled(nullptr, nullptr, &cancel);

@@ -7,9 +7,8 @@
 
 #include <cmath>
 
-#include <openvdb/tools/MeshToVolume.h>
-
 #include "core/error.h"
+#include "support/plain_level_set.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 #include "volume/extract_mesh.h"
@@ -19,15 +18,7 @@ namespace {
 
 using fabvdb::Mesh;
 using fabvdb::Vec3;
-
-openvdb::FloatGrid::Ptr level_set(const Mesh& mesh, double voxel) {
-    std::vector<openvdb::Vec3s> points;
-    std::vector<openvdb::Vec3I> triangles;
-    for (const Vec3& p : mesh.vertices) points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
-    for (const auto& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-    auto transform = openvdb::math::Transform::createLinearTransform(voxel);
-    return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles, 3.0f);
-}
+using fabvdb::test::plain_level_set;
 
 // A torus around the y axis (a ring standing up in the xz plane).
 Mesh standing_ring() {
@@ -54,7 +45,7 @@ TEST_P(Sweep, RingBecomesDoubleHeightFieldContainingIt) {
 
     fabvdb::Progress progress;
     fabvdb::volume::SweepStats stats;
-    auto swept = fabvdb::volume::sweep_double_height_field(*level_set(ring, 0.4), d, {}, {}, progress, &stats);
+    auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.4), d, {}, {}, progress, &stats);
     const Mesh result = fabvdb::volume::extract_mesh(*swept, 0.0, progress);
 
     // On the grid: its index z axis is d, and along every index column the
@@ -113,8 +104,8 @@ TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
     const Mesh block = fabvdb::test::make_box({-4, -2, -4}, {4, 2, 4});
     fabvdb::Progress progress;
     fabvdb::volume::SweepStats stats;
-    openvdb::FloatGrid::ConstPtr keep_out = level_set(block, 0.4);
-    auto swept = fabvdb::volume::sweep_double_height_field(*level_set(ring, 0.4), {0, 0, 1}, {keep_out}, {},
+    openvdb::FloatGrid::ConstPtr keep_out = plain_level_set(block, 0.4);
+    auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.4), {0, 0, 1}, {keep_out}, {},
                                                            progress, &stats);
     const Mesh result = fabvdb::volume::extract_mesh(*swept, 0.0, progress);
     ASSERT_TRUE(fabvdb::test::closed_two_manifold(result));
@@ -129,7 +120,7 @@ TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
 TEST(SweepErrors, RejectsZeroDirectionAndFogVolumes) {
     openvdb::initialize();
     fabvdb::Progress progress;
-    auto part = level_set(fabvdb::test::make_box({0, 0, 0}, {2, 2, 2}), 0.5);
+    auto part = plain_level_set(fabvdb::test::make_box({0, 0, 0}, {2, 2, 2}), 0.5);
     EXPECT_THROW(fabvdb::volume::sweep_double_height_field(*part, {0, 0, 0}, {}, {}, progress), fabvdb::Error);
     openvdb::FloatGrid fog;
     EXPECT_THROW(fabvdb::volume::sweep_double_height_field(fog, {0, 0, 1}, {}, {}, progress), fabvdb::Error);
@@ -147,7 +138,7 @@ TEST(SweepErrors, CancelledSweepThrowsCancelled) {
     openvdb::initialize();
     std::atomic<bool> cancel{true};
     fabvdb::Progress progress(nullptr, nullptr, &cancel);
-    auto part = level_set(standing_ring(), 0.5);
+    auto part = plain_level_set(standing_ring(), 0.5);
     try {
         fabvdb::volume::sweep_double_height_field(*part, {0, 0, 1}, {}, {}, progress);
         FAIL() << "expected cancellation";

@@ -1,0 +1,13 @@
+// A level set of a clean closed mesh by OpenVDB's own meshToLevelSet (3-voxel
+// half band), for tests that need a solid without going through the repair.
+#pragma once
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+
+namespace fabvdb::test {
+
+openvdb::FloatGrid::Ptr plain_level_set(const Mesh& mesh, double voxel);
+
+}  // namespace fabvdb::test
