@@ -50,6 +50,12 @@ Mesh make_torus(const Vec3& center, double major, double minor, int segments_maj
     return mesh;
 }
 
+Mesh make_standing_torus(double major, double minor, int segments_major, int segments_minor) {
+    Mesh ring = make_torus({0, 0, 0}, major, minor, segments_major, segments_minor);
+    for (Vec3& p : ring.vertices) p = {p[0], -p[2], p[1]};
+    return ring;
+}
+
 Mesh flipped(Mesh mesh) {
     for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
     return mesh;

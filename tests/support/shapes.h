@@ -15,6 +15,9 @@ Mesh make_box(const Vec3& lo, const Vec3& hi);
 Mesh make_sphere(const Vec3& center, double radius, int levels);
 //! Torus around the z axis: tube radius `minor` at distance `major`.
 Mesh make_torus(const Vec3& center, double major, double minor, int segments_major, int segments_minor);
+//! A torus about the origin standing up in the xz plane (its axis along y), so
+//! lines along z cross it four times: a part that is no double height field.
+Mesh make_standing_torus(double major, double minor, int segments_major, int segments_minor);
 //! The same mesh with every triangle's orientation flipped.
 Mesh flipped(Mesh mesh);
 //! Two meshes as one (vertex indices of `b` shifted).

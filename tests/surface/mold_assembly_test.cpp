@@ -46,13 +46,19 @@ Mesh rotated_to(Mesh mesh, const Vec3& axis) {
     return mesh;
 }
 
+// The test parts are ~30 mm: an 8 mm margin on a 1.6 mm grid.
+fabvdb::surface::MoldOptions small_mold_options() {
+    fabvdb::surface::MoldOptions options;
+    options.margin = 8.0;
+    options.grid_step = 1.6;
+    return options;
+}
+
 TEST(MoldAssembly, SphereSplitAtTheEquator) {
     const Mesh upper = fabvdb::test::make_dome_shell(15.0, 12.0, 12, 48);
     const Mesh lower = mirrored_z(upper);
     fabvdb::Progress progress;
-    fabvdb::surface::MoldOptions options;
-    options.margin = 8.0;
-    options.grid_step = 1.6;
+    const fabvdb::surface::MoldOptions options = small_mold_options();
     {
         SCOPED_TRACE("upper shell along +Z");
         check_mold(upper, {0, 0, 1}, fabvdb::surface::assemble_mold(upper, {0, 0, 1}, options, progress));
@@ -67,18 +73,14 @@ TEST(MoldAssembly, TiltedShell) {
     const Vec3 axis{0.48, -0.6, 0.64};
     const Mesh shell = rotated_to(fabvdb::test::make_dome_shell(15.0, 12.0, 10, 40), axis);
     fabvdb::Progress progress;
-    fabvdb::surface::MoldOptions options;
-    options.margin = 8.0;
-    options.grid_step = 1.6;
+    const fabvdb::surface::MoldOptions options = small_mold_options();
     check_mold(shell, axis, fabvdb::surface::assemble_mold(shell, axis, options, progress));
 }
 
 TEST(MoldAssembly, FlatTorus) {
     const Mesh torus = fabvdb::test::make_torus({1, 2, 3}, 14.0, 4.0, 48, 16);
     fabvdb::Progress progress;
-    fabvdb::surface::MoldOptions options;
-    options.margin = 8.0;
-    options.grid_step = 1.6;
+    const fabvdb::surface::MoldOptions options = small_mold_options();
     check_mold(torus, {0, 0, 1}, fabvdb::surface::assemble_mold(torus, {0, 0, 1}, options, progress));
 }
 
@@ -86,9 +88,7 @@ TEST(MoldAssembly, CommonMoldForTheTwoHalvesOfASphere) {
     const Mesh upper = fabvdb::test::make_dome_shell(15.0, 12.0, 12, 48);
     const Mesh lower = mirrored_z(upper);
     fabvdb::Progress progress;
-    fabvdb::surface::MoldOptions options;
-    options.margin = 8.0;
-    options.grid_step = 1.6;
+    const fabvdb::surface::MoldOptions options = small_mold_options();
     std::vector<Vec3> offsets;
     const auto mold =
         fabvdb::surface::assemble_common_mold({upper, lower}, {{0, 0, 1}, {0, 0, -1}}, options, progress, offsets);
@@ -107,8 +107,7 @@ TEST(MoldAssembly, CommonMoldForTheTwoHalvesOfASphere) {
 }
 
 TEST(MoldAssembly, PartThatIsNotAHeightFieldIsRefused) {
-    Mesh ring = fabvdb::test::make_torus({0, 0, 0}, 14.0, 4.0, 32, 12);
-    for (Vec3& p : ring.vertices) p = {p[0], -p[2], p[1]};  // standing up: four crossings along Z
+    const Mesh ring = fabvdb::test::make_standing_torus(14.0, 4.0, 32, 12);
     fabvdb::Progress progress;
     try {
         fabvdb::surface::assemble_mold(ring, {0, 0, 1}, {}, progress);

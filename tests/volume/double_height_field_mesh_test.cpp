@@ -20,12 +20,6 @@ using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::test::plain_level_set;
 
-Mesh standing_ring() {
-    Mesh ring = fabvdb::test::make_torus({0, 0, 0}, 10.0, 3.0, 48, 24);
-    for (Vec3& p : ring.vertices) p = {p[0], -p[2], p[1]};
-    return ring;
-}
-
 void expect_exact_double_height_field(const Mesh& mesh, const Vec3& d) {
     ASSERT_GT(mesh.triangles.size(), 500u);
     EXPECT_TRUE(fabvdb::test::closed_two_manifold(mesh));
@@ -46,7 +40,7 @@ TEST_P(DoubleHeightFieldMesh, SweptRingIsExact) {
     const Vec3 d = GetParam();
     fabvdb::Progress progress;
     fabvdb::volume::SweepStats stats;
-    const Mesh ring = standing_ring();
+    const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
     auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.4), d, {}, {}, progress, &stats);
     const Mesh mesh = fabvdb::volume::double_height_field_mesh(*swept, progress);
     expect_exact_double_height_field(mesh, d);
@@ -88,8 +82,8 @@ TEST(DoubleHeightFieldMeshErrors, EmptyGridIsBadInputAndCancelIsHonoured) {
     fabvdb::Progress progress;
     openvdb::FloatGrid empty;
     EXPECT_THROW(fabvdb::volume::double_height_field_mesh(empty, progress), fabvdb::Error);
-    auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(standing_ring(), 0.5), {0, 0, 1}, {}, {},
-                                                           progress);
+    const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
+    auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.5), {0, 0, 1}, {}, {}, progress);
     std::atomic<bool> cancel{true};
     fabvdb::Progress cancelled(nullptr, nullptr, &cancel);
     try {

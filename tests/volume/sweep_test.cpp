@@ -20,13 +20,6 @@ using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::test::plain_level_set;
 
-// A torus around the y axis (a ring standing up in the xz plane).
-Mesh standing_ring() {
-    Mesh ring = fabvdb::test::make_torus({0, 0, 0}, 10.0, 3.0, 48, 24);
-    for (Vec3& p : ring.vertices) p = {p[0], -p[2], p[1]};
-    return ring;
-}
-
 Vec3 normalized(const Vec3& v) {
     const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     return {v[0] / n, v[1] / n, v[2] / n};
@@ -39,7 +32,7 @@ protected:
 
 TEST_P(Sweep, RingBecomesDoubleHeightFieldContainingIt) {
     const Vec3 d = normalized(GetParam());
-    const Mesh ring = standing_ring();
+    const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
     // Premise: the ring is not a double height field along d.
     EXPECT_GT(fabvdb::test::check_double_height_field(ring, d, 40).lines_over_two, 10u);
 
@@ -99,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(Directions, Sweep,
 
 TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
     openvdb::initialize();
-    const Mesh ring = standing_ring();
+    const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
     // A block filling the middle of the ring's hole, where the sweep adds volume.
     const Mesh block = fabvdb::test::make_box({-4, -2, -4}, {4, 2, 4});
     fabvdb::Progress progress;
@@ -138,7 +131,7 @@ TEST(SweepErrors, CancelledSweepThrowsCancelled) {
     openvdb::initialize();
     std::atomic<bool> cancel{true};
     fabvdb::Progress progress(nullptr, nullptr, &cancel);
-    auto part = plain_level_set(standing_ring(), 0.5);
+    auto part = plain_level_set(fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24), 0.5);
     try {
         fabvdb::volume::sweep_double_height_field(*part, {0, 0, 1}, {}, {}, progress);
         FAIL() << "expected cancellation";
