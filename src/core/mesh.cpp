@@ -1,4 +1,4 @@
-//! Bounding box, signed volume and validation of the plain mesh type.
+//! Bounding box, areas, signed volume and validation of the plain mesh type.
 #include "core/mesh.h"
 
 #include <cmath>
@@ -32,6 +32,14 @@ BoundingBox bounding_box(const Mesh& mesh, bool referenced_only) {
     }
     if (box.min[0] > box.max[0]) return BoundingBox{};
     return box;
+}
+
+double triangle_area(const Mesh& mesh, const Triangle& t) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
 double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c) {

@@ -29,6 +29,8 @@ struct BoundingBox {
 //! `referenced_only` is false). Empty input gives a zero box.
 BoundingBox bounding_box(const Mesh& mesh, bool referenced_only = true);
 
+//! Area of one triangle of the mesh.
+double triangle_area(const Mesh& mesh, const Triangle& t);
 //! Six times the signed volume of the tetrahedron (origin, a, b, c).
 double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c);
 //! Signed volume enclosed by the triangles (divergence theorem about the

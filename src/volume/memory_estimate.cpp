@@ -14,15 +14,7 @@ constexpr double bytes_per_active_voxel = 48.0;
 
 double surface_area(const Mesh& mesh) {
     double area = 0.0;
-    for (const Triangle& t : mesh.triangles) {
-        const Vec3& a = mesh.vertices[t[0]];
-        const Vec3& b = mesh.vertices[t[1]];
-        const Vec3& c = mesh.vertices[t[2]];
-        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    }
+    for (const Triangle& t : mesh.triangles) area += triangle_area(mesh, t);
     return area;
 }
 

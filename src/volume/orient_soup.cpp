@@ -2,7 +2,6 @@
 #include "volume/orient_soup.h"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 #include <unordered_map>
 
@@ -73,47 +72,36 @@ void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_
         if (found) input_order.emplace(sorted_corners(u), u);
     }
 
-    std::unordered_map<uint32_t, std::array<double, 2>> agreement;  // root -> {agreeing area, total area}
+    // Per piece (indexed by its root vertex): area whose input order agrees
+    // with the outward one, and total area.
+    std::vector<double> agreeing(oriented.vertices.size(), 0.0), total(oriented.vertices.size(), 0.0);
     for (const Triangle& t : oriented.triangles) {
-        const Vec3 &a = oriented.vertices[t[0]], &b = oriented.vertices[t[1]], &c = oriented.vertices[t[2]];
-        const Vec3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const double area = std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) +
-                                      std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
-                                      std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
-        auto& [agreeing, total] = agreement[find_root(parent, t[0])];
-        total += area;
+        const uint32_t root = find_root(parent, t[0]);
+        const double area = triangle_area(oriented, t);
+        total[root] += area;
         const auto it = input_order.find(sorted_corners(t));
-        if (it != input_order.end() && same_cycle(t, it->second)) agreeing += area;
+        if (it != input_order.end() && same_cycle(t, it->second)) agreeing[root] += area;
     }
-
-    std::vector<uint32_t> inward_roots;
-    for (const auto& [root, area] : agreement)
-        if (area[0] < 0.5 * area[1]) inward_roots.push_back(root);
-    if (inward_roots.empty()) return;
-    const auto is_inward = [&](uint32_t root) {
-        return std::find(inward_roots.begin(), inward_roots.end(), root) != inward_roots.end();
-    };
+    std::vector<char> cavity(oriented.vertices.size(), 0);
+    bool any_inward = false;
+    for (uint32_t root = 0; root < total.size(); ++root)
+        if (total[root] > 0.0 && agreeing[root] < 0.5 * total[root]) cavity[root] = any_inward = true;
+    if (!any_inward) return;
     Mesh outward;
     outward.vertices = oriented.vertices;
     for (const Triangle& t : oriented.triangles)
-        if (!is_inward(find_root(parent, t[0]))) outward.triangles.push_back(t);
+        if (!cavity[find_root(parent, t[0])]) outward.triangles.push_back(t);
     if (outward.triangles.empty()) return;
 
     // A cavity lies wholly inside: every one of its points (a piece that only
     // overlaps the solid is an inverted solid of its own, to be united).
     const WindingNumber solid(outward);
-    std::unordered_map<uint32_t, bool> enclosed;
-    for (uint32_t root : inward_roots) enclosed[root] = true;
     for (uint32_t v = 0; v < oriented.vertices.size(); ++v) {
-        const auto it = enclosed.find(find_root(parent, v));
-        if (it != enclosed.end() && it->second && solid(oriented.vertices[v]) < 0.5) it->second = false;
+        const uint32_t root = find_root(parent, v);
+        if (cavity[root] && solid(oriented.vertices[v]) < 0.5) cavity[root] = false;
     }
-    std::vector<uint32_t> cavity_roots;
-    for (const auto& [root, inside] : enclosed)
-        if (inside) cavity_roots.push_back(root);
     for (Triangle& t : oriented.triangles)
-        if (std::find(cavity_roots.begin(), cavity_roots.end(), find_root(parent, t[0])) != cavity_roots.end())
-            std::swap(t[1], t[2]);
+        if (cavity[find_root(parent, t[0])]) std::swap(t[1], t[2]);
 }
 
 }  // namespace
@@ -160,12 +148,10 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
     for (const Triangle& t : oriented.triangles) {
         const uint32_t root = find_root(parent, t[0]);
         const auto& c = centroid[root];
-        double p[3][3];
+        Vec3 p[3];
         for (int i = 0; i < 3; ++i)
             for (int k = 0; k < 3; ++k) p[i][k] = oriented.vertices[t[i]][k] - c[k] / c[3];
-        volume[root] += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                        p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                        p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+        volume[root] += six_signed_tetrahedron_volume(p[0], p[1], p[2]);
     }
     for (Triangle& t : oriented.triangles)
         if (volume[find_root(parent, t[0])] < 0.0) std::swap(t[1], t[2]);
