@@ -37,13 +37,7 @@ void write_heatmap_ply(const Mesh& surface, const CavityPatches& patches, const 
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the heat map's drainability does not match its patches");
     std::vector<double> sum(surface.vertices.size(), 0.0), weight(surface.vertices.size(), 0.0);
     for (size_t t = 0; t < surface.triangles.size(); ++t) {
-        const Vec3& a = surface.vertices[surface.triangles[t][0]];
-        const Vec3& b = surface.vertices[surface.triangles[t][1]];
-        const Vec3& c = surface.vertices[surface.triangles[t][2]];
-        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const double area = 0.5 * std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) +
-                                             std::pow(u[2] * v[0] - u[0] * v[2], 2) +
-                                             std::pow(u[0] * v[1] - u[1] * v[0], 2)) + 1e-12;
+        const double area = triangle_area(surface, surface.triangles[t]) + 1e-12;
         const double value = drainability[patches.patch_of_triangle[t]];
         for (uint32_t corner : surface.triangles[t]) {
             sum[corner] += area * value;

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "volume/low_res_surface.h"
+#include "volume/memory_estimate.h"
 #include "volume/shell_prisms.h"
 #include "volume/signed_distance.h"
 
@@ -25,16 +26,7 @@ LowResShell low_res_shell(const Mesh& input, const LowResShellOptions& options, 
         result.seconds[name] = std::chrono::duration<double>(now - start).count();
         start = now;
     };
-    double area = 0;
-    for (const Triangle& t : input.triangles) {
-        const Vec3& a = input.vertices[t[0]];
-        const Vec3& b = input.vertices[t[1]];
-        const Vec3& c = input.vertices[t[2]];
-        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
-        area += 0.5 * std::sqrt(x * x + y * y + z * z);
-    }
+    const double area = surface_area(input);
     const BoundingBox box = bounding_box(input);
     const double extent = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
     const double edge = edge_length_for_triangles(area, options.target_triangles);
