@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include <openvdb/tools/FastSweeping.h>
-#include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/ValueTransformer.h>
 
 #include "core/error.h"
@@ -16,10 +15,10 @@
 #include "volume/clean_solid.h"
 #include "volume/extract_mesh.h"
 #include "volume/memory_estimate.h"
-#include "volume/progress_interrupter.h"
 #include "volume/repair.h"
 #include "volume/signed_distance.h"
 #include "volume/snap_to_offset.h"
+#include "volume/solid_distance.h"
 #include "volume/surfaces_disjoint.h"
 
 namespace fabvdb::volume {
@@ -57,34 +56,6 @@ void validate(const HollowOptions& o) {
     require(std::isfinite(o.min_cavity_volume) && o.min_cavity_volume >= 0.0, "minimum cavity volume must be >= 0");
     require(std::isfinite(o.infill.cell) && o.infill.cell >= 0.0, "infill cell must be >= 0 mm (0: no infill)");
     if (o.infill.cell > 0.0) validate_gyroid_struts(o.infill);
-}
-
-//! Distance band of the solid reaching `interior_depth` mm inside, with the
-//! closest outer triangle of every band voxel (for the exact snap).
-struct SolidDistance {
-    openvdb::FloatGrid::Ptr distance;
-    openvdb::Int32Grid::Ptr closest_triangle;
-};
-
-SolidDistance solid_distance(const Mesh& outer, double voxel, double interior_depth, Progress& progress) {
-    progress.stage("interior distance");
-    auto transform = openvdb::math::Transform::createLinearTransform(voxel);
-    std::vector<openvdb::Vec3s> points(outer.vertices.size());
-    for (size_t i = 0; i < points.size(); ++i)
-        points[i] = openvdb::Vec3s(
-            transform->worldToIndex(openvdb::Vec3d(outer.vertices[i][0], outer.vertices[i][1], outer.vertices[i][2])));
-    std::vector<openvdb::Vec3I> triangles(outer.triangles.size());
-    for (size_t i = 0; i < triangles.size(); ++i)
-        triangles[i] = openvdb::Vec3I(outer.triangles[i][0], outer.triangles[i][1], outer.triangles[i][2]);
-    openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
-    ProgressInterrupter interrupter(progress);
-    SolidDistance solid;
-    solid.closest_triangle = openvdb::Int32Grid::create();
-    solid.distance = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
-        interrupter, adapter, *transform, 2.0f, float(interior_depth / voxel + 3.0), 0, solid.closest_triangle.get());
-    progress.check();
-    solid.distance->setGridClass(openvdb::GRID_LEVEL_SET);
-    return solid;
 }
 
 //! A copy of `grid` with `offset` added to every value (tiles and background
@@ -180,7 +151,7 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     // Distances down to the deepest iso-surface the cavity needs.
     const double opening = cavity_opening(options, voxel);
     const double depth = options.wall + opening;
-    const SolidDistance solid = solid_distance(outer, voxel, depth, progress);
+    SolidDistance solid = solid_distance(outer, voxel, depth, progress);
     clock.lap("interior distance");
     const double thickest = deepest(*solid.distance);
     if (thickest <= options.wall) {
@@ -196,6 +167,7 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     progress.stage("cavity offset");
     openvdb::FloatGrid::Ptr cavity =
         shifted(*openvdb::tools::sdfToSdf(*solid.distance, float(-depth)), float(-opening));
+    solid.distance.reset();
     progress.check();
     clock.lap("cavity offset");
     if (options.infill.cell > 0.0) {

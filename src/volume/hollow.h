@@ -5,9 +5,11 @@
 //! −wall, opened by the closing distance like PrusaSlicer's, and at least by
 //! one voxel (offset by −(wall + opening), the core's distance rebuilt by fast
 //! sweeping, then by +opening): void slivers thinner than two voxels, whose
-//! two sides could not both be snapped, are dropped. It is extracted from a
-//! narrow band whose interior reaches that depth, its vertices snapped to the
-//! exact offset of the outer triangles.
+//! two sides could not both be snapped, are dropped. The distances come from
+//! the outer triangles themselves (exact near the surface, propagated inward
+//! with each voxel's nearest triangle: solid_distance.h); the cavity is
+//! extracted and its vertices snapped to the exact offset of the outer
+//! triangles.
 //! Guarantees: outer shells face out, cavity shells face in, every shell is
 //! closed and no cavity triangle touches the outer surface (checked exactly);
 //! regions thinner than 2·(wall + opening) stay solid; voids under

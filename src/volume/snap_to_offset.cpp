@@ -11,6 +11,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "volume/nearest_triangle.h"
+
 namespace fabvdb::volume {
 
 namespace {
@@ -18,103 +20,6 @@ namespace {
 using openvdb::Vec3d;
 
 Vec3d vec(const Vec3& p) { return Vec3d(p[0], p[1], p[2]); }
-
-//! The point of triangle abc closest to p, by the Voronoi region of p
-//! (vertex, edge or face) computed from barycentric dot products.
-Vec3d closest_point_on_triangle(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-    const Vec3d ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-    if (d1 <= 0 && d2 <= 0) return a;
-    const Vec3d bp = p - b;
-    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-    if (d3 >= 0 && d4 <= d3) return b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-    const Vec3d cp = p - c;
-    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-    if (d6 >= 0 && d5 <= d6) return c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double denominator = 1.0 / (va + vb + vc);
-    return a + ab * (vb * denominator) + ac * (vc * denominator);
-}
-
-//! Triangles around each vertex of the outer surface (compressed rows).
-struct VertexTriangles {
-    std::vector<uint32_t> first, triangles;
-    explicit VertexTriangles(const Mesh& mesh) : first(mesh.vertices.size() + 1, 0) {
-        for (const Triangle& t : mesh.triangles)
-            for (uint32_t v : t) ++first[v + 1];
-        for (size_t i = 1; i < first.size(); ++i) first[i] += first[i - 1];
-        triangles.resize(first.back());
-        std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-        for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-            for (uint32_t v : mesh.triangles[t]) triangles[fill[v]++] = t;
-    }
-};
-
-struct Closest {
-    Vec3d point;
-    double distance = std::numeric_limits<double>::infinity();
-    bool found() const { return std::isfinite(distance); }
-};
-
-//! Exact distance from p to the outer surface, over the closest triangles the
-//! index grid holds in the 27 voxels around p and the triangles around the
-//! best one's corners.
-class OuterDistance {
-public:
-    OuterDistance(const Mesh& outer, const VertexTriangles& around, const openvdb::Int32Grid& index)
-        : outer_(outer), around_(around), index_(index), accessor_(index.getConstAccessor()) {}
-
-    Closest operator()(const Vec3d& p) {
-        candidates_.clear();
-        const openvdb::Coord center = index_.transform().worldToIndexNodeCentered(p);
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
-                    openvdb::Int32 triangle;
-                    if (accessor_.probeValue(center.offsetBy(dx, dy, dz), triangle) && triangle >= 0 &&
-                        size_t(triangle) < outer_.triangles.size())
-                        candidates_.push_back(uint32_t(triangle));
-                }
-        Closest best;
-        uint32_t best_triangle = 0;
-        consider(p, best, best_triangle);
-        if (!best.found()) return best;
-        candidates_.clear();
-        for (uint32_t v : outer_.triangles[best_triangle])
-            for (uint32_t k = around_.first[v]; k < around_.first[v + 1]; ++k)
-                candidates_.push_back(around_.triangles[k]);
-        consider(p, best, best_triangle);
-        return best;
-    }
-
-private:
-    void consider(const Vec3d& p, Closest& best, uint32_t& best_triangle) {
-        std::sort(candidates_.begin(), candidates_.end());
-        candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
-        for (uint32_t t : candidates_) {
-            const Triangle& tri = outer_.triangles[t];
-            const Vec3d q = closest_point_on_triangle(p, vec(outer_.vertices[tri[0]]), vec(outer_.vertices[tri[1]]),
-                                                      vec(outer_.vertices[tri[2]]));
-            const double distance = (p - q).length();
-            if (distance < best.distance) {
-                best.distance = distance;
-                best.point = q;
-                best_triangle = t;
-            }
-        }
-    }
-
-    const Mesh& outer_;
-    const VertexTriangles& around_;
-    const openvdb::Int32Grid& index_;
-    openvdb::Int32Grid::ConstAccessor accessor_;
-    std::vector<uint32_t> candidates_;
-};
 
 Vec3d normal(const Mesh& mesh, const Triangle& t) {
     const Vec3d a = vec(mesh.vertices[t[0]]);
@@ -145,7 +50,7 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_triangles(const Mesh& mesh) 
 SnapStats snap_to_offset(Mesh& cavity, const Mesh& outer, const openvdb::Int32Grid& closest_triangle, double wall,
                          OffsetSnap mode, Progress& progress) {
     progress.stage("snap cavity to the wall offset");
-    const VertexTriangles around(outer);
+    const NearestTriangle nearest(outer, closest_triangle);
     const std::vector<Vec3> original = cavity.vertices;
     std::vector<double> depth(cavity.vertices.size(), std::numeric_limits<double>::infinity());
     std::vector<char> moved(cavity.vertices.size(), 0);
@@ -155,12 +60,12 @@ SnapStats snap_to_offset(Mesh& cavity, const Mesh& outer, const openvdb::Int32Gr
     const auto measure_and_move = [&](const std::vector<uint32_t>* only, bool move) {
         const size_t count = only ? only->size() : cavity.vertices.size();
         tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 512), [&](const tbb::blocked_range<size_t>& range) {
-            OuterDistance distance(outer, around, closest_triangle);
+            NearestTriangle::Query distance(nearest);
             for (size_t k = range.begin(); k != range.end(); ++k) {
                 if (progress.cancelled()) return;
                 const size_t i = only ? (*only)[k] : k;
                 const Vec3d p = vec(cavity.vertices[i]);
-                const Closest closest = distance(p);
+                const NearestTriangle::Result closest = distance(p);
                 if (!closest.found() || closest.distance <= 0.0) continue;
                 depth[i] = closest.distance;
                 const bool shallow = closest.distance < wall;

@@ -1,7 +1,7 @@
 //! Puts the vertices of an extracted cavity surface on the exact inner offset
 //! of the outer surface: each vertex's true distance to the outer triangles is
-//! measured (candidates: the closest triangles OpenVDB's mesh-to-volume
-//! recorded in the voxels around it, and their neighbours) and the vertex is
+//! measured (see nearest_triangle.h: the closest triangles recorded in the
+//! voxels around it, and a descent over their neighbours) and the vertex is
 //! moved along the distance gradient to depth `wall` (mode exact), or only
 //! when it is shallower than `wall` (mode at_least, for a cavity rounded by a
 //! closing distance). A move that would flip a triangle is undone, so the
@@ -26,9 +26,8 @@ struct SnapStats {
     size_t kept_back = 0;   //!< vertices left in place because moving them flipped a triangle
 };
 
-//! `closest_triangle`: the polygon index grid of the outer surface's mesh to
-//! volume conversion (same voxels as the distance grid); its band must cover
-//! the cavity vertices. `outer` is the mesh that was converted.
+//! `closest_triangle`: the nearest outer triangle of every voxel of a band
+//! that covers the cavity vertices (see solid_distance.h).
 SnapStats snap_to_offset(Mesh& cavity, const Mesh& outer, const openvdb::Int32Grid& closest_triangle, double wall,
                          OffsetSnap mode, Progress& progress);
 

@@ -1,0 +1,74 @@
+//! Nearest triangle from grid hints and descent (see nearest_triangle.h).
+#include "volume/nearest_triangle.h"
+
+#include <algorithm>
+
+#include "volume/closest_point_on_triangle.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+openvdb::Vec3d vec(const Vec3& p) { return openvdb::Vec3d(p[0], p[1], p[2]); }
+
+}  // namespace
+
+NearestTriangle::NearestTriangle(const Mesh& mesh, const openvdb::Int32Grid& hints)
+    : mesh_(mesh), hints_(hints), first_(mesh.vertices.size() + 1, 0) {
+    for (const Triangle& t : mesh.triangles)
+        for (uint32_t v : t) ++first_[v + 1];
+    for (size_t i = 1; i < first_.size(); ++i) first_[i] += first_[i - 1];
+    around_.resize(first_.back());
+    std::vector<uint32_t> fill(first_.begin(), first_.end() - 1);
+    for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
+        for (uint32_t v : mesh.triangles[t]) around_[fill[v]++] = t;
+}
+
+NearestTriangle::Query::Query(const NearestTriangle& search, bool descend)
+    : search_(search), descend_(descend), hints_(search.hints_.tree()) {}
+
+NearestTriangle::Result NearestTriangle::Query::operator()(const openvdb::Vec3d& p) {
+    candidates_.clear();
+    const openvdb::Coord center = search_.hints_.transform().worldToIndexNodeCentered(p);
+    for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dz = -1; dz <= 1; ++dz) {
+                openvdb::Int32 triangle;
+                if (hints_.probeValue(center.offsetBy(dx, dy, dz), triangle) && triangle >= 0 &&
+                    size_t(triangle) < search_.mesh_.triangles.size())
+                    candidates_.push_back(uint32_t(triangle));
+            }
+    Result best;
+    consider(p, best);
+    // Descend over the triangles around the best one's corners.
+    for (int step = 0; descend_ && step < 8 && best.found(); ++step) {
+        const uint32_t before = best.triangle;
+        candidates_.clear();
+        for (uint32_t v : search_.mesh_.triangles[before])
+            for (uint32_t k = search_.first_[v]; k < search_.first_[v + 1]; ++k)
+                candidates_.push_back(search_.around_[k]);
+        consider(p, best);
+        if (best.triangle == before) break;
+    }
+    return best;
+}
+
+void NearestTriangle::Query::consider(const openvdb::Vec3d& p, Result& best) {
+    std::sort(candidates_.begin(), candidates_.end());
+    candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
+    const Mesh& mesh = search_.mesh_;
+    for (uint32_t t : candidates_) {
+        const Triangle& tri = mesh.triangles[t];
+        const openvdb::Vec3d q =
+            closest_point_on_triangle(p, vec(mesh.vertices[tri[0]]), vec(mesh.vertices[tri[1]]), vec(mesh.vertices[tri[2]]))
+                .point;
+        const double distance = (p - q).length();
+        if (distance < best.distance) {
+            best.distance = distance;
+            best.point = q;
+            best.triangle = t;
+        }
+    }
+}
+
+}  // namespace fabvdb::volume

@@ -1,0 +1,67 @@
+// The clean-solid test: closed oriented solids pass; crossing shells,
+// wherever the crossing lies along the part (the self-intersection test runs
+// in slabs), open or inconsistently oriented surfaces fail. The meshes are
+// built by hand, so the expected answer is known without running any test.
+#include "volume/clean_solid.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+#include "core/error.h"
+#include "support/shapes.h"
+
+namespace fabvdb::volume {
+namespace {
+
+TEST(CleanSolid, ClosedOrientedSolidsPass) {
+    Progress progress;
+    EXPECT_TRUE(is_clean_solid(test::make_box({0, 0, 0}, {80, 10, 10}), progress));
+    EXPECT_TRUE(is_clean_solid(test::make_torus({0, 0, 0}, 20, 6, 64, 32), progress));
+    // A solid with a void: the void's shell faces inward.
+    EXPECT_TRUE(is_clean_solid(test::merged(test::make_box({0, 0, 0}, {30, 30, 30}),
+                                            test::flipped(test::make_box({5, 5, 5}, {25, 25, 25}))),
+                               progress));
+    // Two separate solids.
+    EXPECT_TRUE(is_clean_solid(
+        test::merged(test::make_box({0, 0, 0}, {10, 10, 10}), test::make_box({20, 0, 0}, {30, 10, 10})), progress));
+}
+
+TEST(CleanSolid, CrossingShellsFailWhereverTheCrossingLies) {
+    Progress progress;
+    const Mesh bar = test::make_box({0, 0, 0}, {80, 10, 10});
+    // A small cube through the bar's top face, moved along the whole bar
+    // (slab boundaries at multiples of 10 mm included).
+    for (double x = -1.0; x <= 79.0; x += 2.5) {
+        const Mesh crossing = test::merged(bar, test::make_box({x, 4, 8}, {x + 2, 6, 12}));
+        EXPECT_FALSE(is_clean_solid(crossing, progress)) << "cube at x = " << x;
+    }
+    // Touching along a face counts as crossing too.
+    EXPECT_FALSE(is_clean_solid(test::merged(bar, test::make_box({40, 0, 10}, {42, 10, 12})), progress));
+}
+
+TEST(CleanSolid, OpenOrMisorientedSurfacesFail) {
+    Progress progress;
+    Mesh open = test::make_box({0, 0, 0}, {10, 10, 10});
+    open.triangles.pop_back();
+    EXPECT_FALSE(is_clean_solid(open, progress));
+    Mesh misoriented = test::make_box({0, 0, 0}, {10, 10, 10});
+    std::swap(misoriented.triangles[0][1], misoriented.triangles[0][2]);
+    EXPECT_FALSE(is_clean_solid(misoriented, progress));
+    // Inside out as a whole: encloses no volume.
+    EXPECT_FALSE(is_clean_solid(test::flipped(test::make_box({0, 0, 0}, {10, 10, 10})), progress));
+}
+
+TEST(CleanSolid, CancelledThrows) {
+    std::atomic<bool> cancel{true};
+    Progress progress(nullptr, nullptr, &cancel);
+    try {
+        is_clean_solid(test::make_box({0, 0, 0}, {80, 10, 10}), progress);
+        ADD_FAILURE() << "not cancelled";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
+    }
+}
+
+}  // namespace
+}  // namespace fabvdb::volume
