@@ -4,12 +4,9 @@
 #include <algorithm>
 #include <chrono>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
-
 #include "core/error.h"
+#include "volume/closed_manifold.h"
+#include "volume/crossing_pairs.h"
 #include "volume/drop_small_shells.h"
 #include "volume/extract_mesh.h"
 #include "volume/rebuild_band.h"
@@ -27,34 +24,38 @@ auto timed(std::map<std::string, double>& timings, const char* stage, const Body
     return result;
 }
 
-// Whether two triangles of the mesh intersect other than along shared edges
-// and corners (CGAL's exact predicates), or the mesh is not a 2-manifold.
-bool self_intersects(const Mesh& mesh) {
-    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-    namespace PMP = CGAL::Polygon_mesh_processing;
-    std::vector<Point> points;
-    points.reserve(mesh.vertices.size());
-    for (const Vec3& v : mesh.vertices) points.emplace_back(v[0], v[1], v[2]);
-    std::vector<std::vector<std::size_t>> polygons;
-    polygons.reserve(mesh.triangles.size());
-    for (const Triangle& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
-    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) return true;
-    CGAL::Surface_mesh<Point> surface;
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, surface);
-    return PMP::does_self_intersect<CGAL::Parallel_if_available_tag>(surface);
-}
-
-// Walls thinner than a voxel extract as two sheets through the same cells,
-// which may touch: such a solid is grown by half a voxel (at most twice)
-// until its surface is clean.
-Mesh extract_clean_surface(openvdb::FloatGrid::Ptr& grid, double adaptivity, int half_band, Progress& progress) {
-    Mesh mesh = extract_mesh(*grid, adaptivity, progress);
-    for (int attempt = 0; attempt < 2 && self_intersects(mesh); ++attempt) {
-        progress.stage("thicken thin walls");
-        grid = rebuild_band(*grid, 0.5 * grid->voxelSize()[0], half_band, progress);
-        mesh = extract_mesh(*grid, adaptivity, progress);
+// Extracts the surface and snaps it onto the input where it is clean. Walls
+// thinner than a voxel extract as two sheets through the same cells, which
+// may touch: such a solid is grown by half a voxel (at most twice) until its
+// surface is a closed manifold without crossings. With snapping, the
+// crossing test of the snapped surface covers the extracted one as well.
+void extract_clean_surface(const Mesh& input, const RepairOptions& options, RepairResult& result,
+                           Progress& progress) {
+    auto& timings = result.distance.timings;
+    for (int attempt = 0;; ++attempt) {
+        const bool last = attempt == 2;
+        const bool manifold = timed(timings, "extract surface", [&] {
+            if (attempt > 0) {
+                progress.stage("thicken thin walls");
+                result.grid = rebuild_band(*result.grid, 0.5 * result.grid->voxelSize()[0],
+                                           options.distance.half_band_voxels, progress);
+            }
+            result.mesh = extract_mesh(*result.grid, options.adaptivity, progress);
+            return is_closed_manifold(result.mesh);
+        });
+        if (!manifold && !last) continue;
+        bool crossing = false;
+        if (options.snap) {
+            const SnapResult snap = timed(timings, "snap", [&] {
+                return snap_to_mesh(result.mesh, input, result.grid->voxelSize()[0], progress);
+            });
+            result.snapped_vertices = snap.moved_vertices;
+            crossing = snap.self_intersecting;
+        } else {
+            crossing = timed(timings, "extract surface", [&] { return !crossing_pairs(result.mesh).empty(); });
+        }
+        if (!crossing || last) return;
     }
-    return mesh;
 }
 
 }  // namespace
@@ -79,14 +80,7 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     if (shells.kept == 0)
         throw Error(FABVDB_ERR_BAD_INPUT, options.distance.input_name + ": every shell is smaller than the minimum shell volume");
     result.distance.active_voxels = result.grid->activeVoxelCount();
-    if (!options.extract) return result;
-    result.mesh = timed(timings, "extract surface", [&] {
-        return extract_clean_surface(result.grid, options.adaptivity, options.distance.half_band_voxels, progress);
-    });
-    if (options.snap)
-        result.snapped_vertices = timed(timings, "snap", [&] {
-            return snap_to_mesh(result.mesh, mesh, result.grid->voxelSize()[0], progress);
-        });
+    if (options.extract) extract_clean_surface(mesh, options, result, progress);
     return result;
 }
 

@@ -3,7 +3,9 @@
 //! 1. orient_soup: weld, drop degenerate/duplicate triangles, orient every
 //!    piece consistently and outward.
 //! 2. Unsigned distance in a narrow band (OpenVDB meshToVolume, unsigned).
-//! 3. Sign of every band voxel from the winding number (inside: w >= 1/2).
+//! 3. Sign of every band voxel from the winding number (inside: w >= 1/2);
+//!    for a closed-cycle input (closed_cycle.h) once per group of voxels
+//!    with no surface between them.
 //! 4. If the signed band is a consistent distance field (every sign change
 //!    between neighbours is a surface crossing, no surface voxel without one)
 //!    the interior is flood-filled and we are done. Otherwise (holes wider
@@ -26,6 +28,7 @@
 #include <openvdb/tree/LeafManager.h>
 
 #include "core/error.h"
+#include "volume/closed_cycle.h"
 #include "volume/memory_estimate.h"
 #include "volume/orient_soup.h"
 #include "volume/progress_interrupter.h"
@@ -110,6 +113,75 @@ void for_each_index(size_t count, Progress& progress, const Body& body) {
 Vec3 world_position(const openvdb::math::Transform& transform, const openvdb::Coord& ijk) {
     const openvdb::Vec3d p = transform.indexToWorld(ijk);
     return {p[0], p[1], p[2]};
+}
+
+// The winding number at every active voxel of one leaf of the unsigned band,
+// into w[offset], for a closed-cycle input, whose winding number is constant
+// off the surface. Two face or edge neighbours whose distances add up to more
+// than the length between them have no surface between them (meshToVolume
+// gives a voxel within 1.5 voxels of a triangle its exact distance to it), so
+// they share w. The leaf's voxels are grouped over such links and w is taken
+// once per group, at its voxel farthest from the surface, where the tree is
+// most accurate; a large group is checked at a second voxel away from the
+// first, and taken voxel by voxel if the two disagree about the side.
+void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& winding,
+                               const openvdb::math::Transform& transform, float* w) {
+    const double voxel = transform.voxelSize()[0];
+    static constexpr int forward[9][3] = {{0, 0, 1}, {0, 1, -1}, {0, 1, 0}, {0, 1, 1}, {1, -1, 0},
+                                          {1, 0, -1}, {1, 0, 0}, {1, 0, 1}, {1, 1, 0}};
+    const auto position = [](int offset) { return openvdb::Coord(offset >> 6, (offset >> 3) & 7, offset & 7); };
+    int16_t group[leaf_size];
+    const auto root = [&](int i) {
+        while (group[i] != i) i = group[i] = group[group[i]];
+        return i;
+    };
+    const auto& active = leaf.getValueMask();
+    for (auto it = active.beginOn(); it; ++it) group[it.pos()] = int16_t(it.pos());
+    for (auto it = active.beginOn(); it; ++it) {
+        const int offset = int(it.pos());
+        const openvdb::Coord p = position(offset);
+        for (const auto& step : forward) {
+            const openvdb::Coord q = p.offsetBy(step[0], step[1], step[2]);
+            if (q[0] >= leaf_dim || q[1] < 0 || q[1] >= leaf_dim || q[2] < 0 || q[2] >= leaf_dim) continue;
+            const int neighbour = (q[0] << 6) | (q[1] << 3) | q[2];
+            if (!active.isOn(neighbour)) continue;
+            const double length = voxel * std::sqrt(double(step[0] * step[0] + step[1] * step[1] + step[2] * step[2]));
+            if (double(leaf.getValue(offset)) + double(leaf.getValue(neighbour)) > length * (1.0 + 1e-3))
+                group[root(neighbour)] = int16_t(root(offset));
+        }
+    }
+    // Per group root: its farthest voxel and, for a large group, the farthest
+    // of its voxels at least 4 voxels away from that one.
+    constexpr int large_group = 32, apart_squared = 16;
+    int16_t farthest[leaf_size], second[leaf_size], size[leaf_size] = {};
+    for (auto it = active.beginOn(); it; ++it) {
+        const int r = root(int(it.pos()));
+        if (size[r]++ == 0 || leaf.getValue(it.pos()) > leaf.getValue(farthest[r])) farthest[r] = int16_t(it.pos());
+        second[r] = -1;
+    }
+    for (auto it = active.beginOn(); it; ++it) {
+        const int r = root(int(it.pos()));
+        if (size[r] < large_group) continue;
+        const openvdb::Coord d = position(int(it.pos())) - position(farthest[r]);
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < apart_squared) continue;
+        if (second[r] < 0 || leaf.getValue(it.pos()) > leaf.getValue(second[r])) second[r] = int16_t(it.pos());
+    }
+    const auto evaluate = [&](int offset) {
+        return float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
+    };
+    float group_w[leaf_size];
+    bool per_voxel[leaf_size];
+    for (auto it = active.beginOn(); it; ++it) {
+        const int offset = int(it.pos());
+        if (root(offset) != offset) continue;
+        group_w[offset] = evaluate(farthest[offset]);
+        per_voxel[offset] = second[offset] >= 0 && (evaluate(second[offset]) >= inside_threshold) !=
+                                                       (group_w[offset] >= inside_threshold);
+    }
+    for (auto it = active.beginOn(); it; ++it) {
+        const int r = root(int(it.pos()));
+        w[it.pos()] = per_voxel[r] ? evaluate(int(it.pos())) : group_w[r];
+    }
 }
 
 // A signed narrow band is a distance field of its zero surface only if every
@@ -291,11 +363,15 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
         band_winding.assign(leaves.leafCount() * size_t(leaf_size), 0.0f);
         const float smallest_distance = float(1e-6 * voxel);
+        const bool closed = is_closed_cycle(mesh);
         for_each_index(leaves.leafCount(), progress, [&](size_t i) {
             uint64_t inside = 0;
+            float* leaf_winding = &band_winding[i * leaf_size];
+            if (closed) closed_cycle_leaf_winding(leaves.leaf(i), *winding, *transform, leaf_winding);
             for (auto voxel_it = leaves.leaf(i).beginValueOn(); voxel_it; ++voxel_it) {
-                const double w = (*winding)(world_position(*transform, voxel_it.getCoord()));
-                band_winding[i * leaf_size + voxel_it.pos()] = float(w);
+                if (!closed)
+                    leaf_winding[voxel_it.pos()] = float((*winding)(world_position(*transform, voxel_it.getCoord())));
+                const double w = leaf_winding[voxel_it.pos()];
                 // Inside values are strictly negative, also on a triangle
                 // (-0.0 would read as outside in every sign test).
                 if (w >= inside_threshold) voxel_it.setValue(-std::max(*voxel_it, smallest_distance));

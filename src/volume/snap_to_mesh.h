@@ -4,7 +4,8 @@
 //! `max_distance`, the input triangle there faces the same way as the surface
 //! around the vertex (so holes, interior and inverted triangles attract
 //! nothing), and no triangle around it flips or degenerates. Moves that would
-//! make two triangles intersect (exact predicates) are undone. Topology is
+//! make two triangles cross (crossing_pairs.h) are undone; crossings where
+//! no vertex moved, i.e. of the surface as given, are reported. Topology is
 //! unchanged. Parallel; reports progress; throws Error(CANCELLED).
 #pragma once
 
@@ -15,7 +16,12 @@
 
 namespace fabvdb::volume {
 
-//! Returns the number of vertices moved.
-uint64_t snap_to_mesh(Mesh& surface, const Mesh& input, double max_distance, Progress& progress);
+struct SnapResult {
+    uint64_t moved_vertices = 0;
+    //! Whether triangles of the surface cross where no vertex moved.
+    bool self_intersecting = false;
+};
+
+SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, double max_distance, Progress& progress);
 
 }  // namespace fabvdb::volume

@@ -1,0 +1,293 @@
+//! Crossing pairs of triangles of a mesh (see crossing_pairs.h).
+//!
+//! Each triangle goes to the grid of its size class: level L has cells of
+//! base × 2^L, and a triangle whose bounding box is at most that wide sits in
+//! the (at most 8) cells its box overlaps. Pairs in one level meet in a shared
+//! cell; a triangle meets the larger ones by looking up the cells its box
+//! overlaps in each coarser level. A pair of overlapping boxes is tested only
+//! in the cell holding the lowest corner of their common box, so once.
+#include "volume/crossing_pairs.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+namespace fabvdb::volume {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+
+struct Box {
+    double lo[3], hi[3];
+};
+
+struct Entry {
+    uint64_t cell;
+    uint32_t triangle;
+    bool operator<(const Entry& other) const {
+        return cell < other.cell || (cell == other.cell && triangle < other.triangle);
+    }
+};
+
+constexpr int cell_bits = 21;
+constexpr int64_t cells_per_axis = int64_t(1) << cell_bits;
+constexpr int max_levels = 40;
+
+class Grids {
+public:
+    explicit Grids(const std::vector<Box>& boxes) {
+        std::vector<double> extents(boxes.size(), 0.0);
+        double top[3];
+        for (int k = 0; k < 3; ++k) {
+            origin_[k] = HUGE_VAL;
+            top[k] = -HUGE_VAL;
+        }
+        for (size_t t = 0; t < boxes.size(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                extents[t] = std::max(extents[t], boxes[t].hi[k] - boxes[t].lo[k]);
+                origin_[k] = std::min(origin_[k], boxes[t].lo[k]);
+                top[k] = std::max(top[k], boxes[t].hi[k]);
+            }
+        double span = 0.0;
+        for (int k = 0; k < 3; ++k) span = std::max(span, top[k] - origin_[k]);
+        std::vector<double> sorted = extents;
+        std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+        base_ = 2.0 * sorted[sorted.size() / 2];
+        // Cells must be few enough per axis for the key, and never empty.
+        base_ = std::max({base_, 2.0 * span / double(cells_per_axis), 1e-300});
+
+        level_.resize(boxes.size());
+        int top_level = 0;
+        for (size_t t = 0; t < boxes.size(); ++t) {
+            int level = 0;
+            while (level + 1 < max_levels && std::ldexp(base_, level) < extents[t]) ++level;
+            level_[t] = uint8_t(level);
+            top_level = std::max(top_level, level);
+        }
+        // Each triangle's cells go to its own slots of its level, in parallel.
+        std::vector<size_t> slot(boxes.size(), 0);
+        entries_.resize(size_t(top_level) + 1);
+        std::vector<size_t> level_size(entries_.size(), 0);
+        for (size_t t = 0; t < boxes.size(); ++t) {
+            slot[t] = level_size[level_[t]];
+            for_each_cell(boxes[t], level_[t], [&](uint64_t) { ++level_size[level_[t]]; });
+        }
+        for (size_t level = 0; level < entries_.size(); ++level) entries_[level].resize(level_size[level]);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size()), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t t = range.begin(); t != range.end(); ++t) {
+                Entry* entry = &entries_[level_[t]][slot[t]];
+                for_each_cell(boxes[t], level_[t], [&](uint64_t cell) { *entry++ = {cell, uint32_t(t)}; });
+            }
+        });
+        for (auto& level : entries_) tbb::parallel_sort(level.begin(), level.end());
+    }
+
+    int levels() const { return int(entries_.size()); }
+    int level(size_t t) const { return level_[t]; }
+    const std::vector<Entry>& entries(int level) const { return entries_[level]; }
+
+    uint64_t cell_of(const double* p, int level) const {
+        uint64_t key = 0;
+        const double size = std::ldexp(base_, level);
+        for (int k = 0; k < 3; ++k)
+            key = key << cell_bits | uint64_t(std::clamp(int64_t(std::floor((p[k] - origin_[k]) / size)), int64_t(0),
+                                                         cells_per_axis - 1));
+        return key;
+    }
+
+    template <class Visit>
+    void for_each_cell(const Box& box, int level, const Visit& visit) const {
+        const uint64_t lo = cell_of(box.lo, level), hi = cell_of(box.hi, level);
+        const uint64_t mask = cells_per_axis - 1;
+        for (uint64_t x = lo >> (2 * cell_bits); x <= hi >> (2 * cell_bits); ++x)
+            for (uint64_t y = (lo >> cell_bits) & mask; y <= ((hi >> cell_bits) & mask); ++y)
+                for (uint64_t z = lo & mask; z <= (hi & mask); ++z) visit(x << (2 * cell_bits) | y << cell_bits | z);
+    }
+
+private:
+    double origin_[3] = {0, 0, 0};
+    double base_ = 1.0;
+    std::vector<uint8_t> level_;
+    std::vector<std::vector<Entry>> entries_;
+};
+
+bool boxes_overlap(const Box& a, const Box& b) {
+    for (int k = 0; k < 3; ++k)
+        if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+    return true;
+}
+
+// Floating-point filters in front of the exact predicates: a sign they
+// return is certain (their error bound is far above the rounding error of the
+// expressions, ~10 ulp of the bound's product); 0 means "not sure".
+using Vec = std::array<double, 3>;
+Vec minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec cross_product(const Vec& a, const Vec& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+constexpr double filter_bound_squared = 1e-24;
+
+// Whether x > 0 beyond the error bound whose square is `bound_squared`.
+int certain_sign(double x, double bound_squared) {
+    if (x * x <= filter_bound_squared * bound_squared) return 0;
+    return x > 0.0 ? 1 : -1;
+}
+
+// The plane of a triangle, for the side of points.
+class TrianglePlane {
+public:
+    TrianglePlane(const std::vector<Vec3>& v, const Triangle& t) : origin_(v[t[0]]) {
+        const Vec ab = minus(v[t[1]], origin_), ac = minus(v[t[2]], origin_);
+        normal_ = cross_product(ab, ac);
+        scale_squared_ = dot(ab, ab) * dot(ac, ac);
+    }
+    int certain_side(const Vec3& p) const {
+        const Vec d = minus(p, origin_);
+        return certain_sign(dot(normal_, d), scale_squared_ * dot(d, d));
+    }
+    // Whether the points lie certainly strictly on one side.
+    template <class... Points>
+    bool certainly_one_side(const Vec3& first, const Points&... others) const {
+        const int side = certain_side(first);
+        return side != 0 && ((certain_side(others) == side) && ...);
+    }
+
+private:
+    Vec3 origin_;
+    Vec normal_;
+    double scale_squared_;
+};
+
+// Whether segment pq certainly misses the triangle (v, a, b): both its ends
+// lie strictly on one side of the triangle's plane or, seen along its normal,
+// strictly beyond the line through v and a or the one through v and b.
+bool segment_certainly_misses(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q) {
+    const Vec va = minus(a, v), vb = minus(b, v), vp = minus(p, v), vq = minus(q, v);
+    const double la = dot(va, va), lb = dot(vb, vb), lp = dot(vp, vp), lq = dot(vq, vq);
+    const Vec normal = cross_product(va, vb);
+    const int side_p = certain_sign(dot(normal, vp), la * lb * lp);
+    if (side_p != 0 && certain_sign(dot(normal, vq), la * lb * lq) == side_p) return true;
+    const Vec toward_b = cross_product(normal, va), toward_a = cross_product(vb, normal);
+    return (certain_sign(dot(toward_b, vp), la * la * lb * lp) < 0 &&
+            certain_sign(dot(toward_b, vq), la * la * lb * lq) < 0) ||
+           (certain_sign(dot(toward_a, vp), lb * lb * la * lp) < 0 &&
+            certain_sign(dot(toward_a, vq), lb * lb * la * lq) < 0);
+}
+
+// Whether triangles a and b meet other than along what they share.
+bool cross(const Mesh& mesh, const Triangle& a, const Triangle& b) {
+    const auto& v = mesh.vertices;
+    const auto point = [&](uint32_t i) { return Point(v[i][0], v[i][1], v[i][2]); };
+    int shared = 0, a_shared[3] = {}, b_shared[3] = {};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (a[i] == b[j]) {
+                ++shared;
+                a_shared[i] = b_shared[j] = 1;
+            }
+    if (shared >= 3) return true;
+    if (shared == 2) {
+        int i = 0, j = 0;
+        while (a_shared[i]) ++i;
+        while (b_shared[j]) ++j;
+        const uint32_t u = a[(i + 1) % 3], w = a[(i + 2) % 3], p = a[i], q = b[j];
+        // Run along the shared edge in opposite directions with normals that
+        // agree: either not coplanar or on opposite sides, so not crossing.
+        if (b[(j + 1) % 3] == w) {
+            const Vec edge = minus(v[w], v[u]), to_p = minus(v[p], v[u]), to_q = minus(v[q], v[u]);
+            const double agreement = dot(cross_product(edge, to_p), cross_product(to_q, edge));
+            const double edge_squared = dot(edge, edge);
+            if (certain_sign(agreement, edge_squared * edge_squared * dot(to_p, to_p) * dot(to_q, to_q)) > 0)
+                return false;
+        }
+        const Point pu = point(u), pw = point(w), pp = point(p), pq = point(q);
+        return CGAL::coplanar(pu, pw, pp, pq) && CGAL::coplanar_orientation(pu, pw, pp, pq) == CGAL::POSITIVE;
+    }
+    const Kernel::Triangle_3 ta(point(a[0]), point(a[1]), point(a[2])), tb(point(b[0]), point(b[1]), point(b[2]));
+    if (shared == 0) {
+        if (TrianglePlane(v, a).certainly_one_side(v[b[0]], v[b[1]], v[b[2]]) ||
+            TrianglePlane(v, b).certainly_one_side(v[a[0]], v[a[1]], v[a[2]]))
+            return false;
+        return CGAL::do_intersect(ta, tb);
+    }
+    int i = 0, j = 0;
+    while (!a_shared[i]) ++i;
+    while (!b_shared[j]) ++j;
+    const uint32_t a1 = a[(i + 1) % 3], a2 = a[(i + 2) % 3], b1 = b[(j + 1) % 3], b2 = b[(j + 2) % 3];
+    const Vec3& corner = v[a[i]];
+    const bool b_edge_misses = segment_certainly_misses(corner, v[a1], v[a2], v[b1], v[b2]);
+    const bool a_edge_misses = segment_certainly_misses(corner, v[b1], v[b2], v[a1], v[a2]);
+    return (!b_edge_misses && CGAL::do_intersect(ta, Kernel::Segment_3(point(b1), point(b2)))) ||
+           (!a_edge_misses && CGAL::do_intersect(tb, Kernel::Segment_3(point(a1), point(a2))));
+}
+
+}  // namespace
+
+std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, const std::vector<char>& candidates) {
+    const size_t count = mesh.triangles.size();
+    if (count < 2) return {};
+    std::vector<Box> boxes(count);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t t = range.begin(); t != range.end(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const double a = mesh.vertices[mesh.triangles[t][0]][k], b = mesh.vertices[mesh.triangles[t][1]][k],
+                             c = mesh.vertices[mesh.triangles[t][2]][k];
+                boxes[t].lo[k] = std::min({a, b, c});
+                boxes[t].hi[k] = std::max({a, b, c});
+            }
+    });
+    const Grids grids(boxes);
+
+    tbb::enumerable_thread_specific<std::vector<std::pair<uint32_t, uint32_t>>> found;
+    // Tests the pair met in `cell` of `level` unless another cell owns it.
+    const auto test = [&](uint32_t i, uint32_t j, int level, uint64_t cell) {
+        if (i == j || (!candidates.empty() && !candidates[i] && !candidates[j])) return;
+        const Box &a = boxes[i], &b = boxes[j];
+        if (!boxes_overlap(a, b)) return;
+        const double corner[3] = {std::max(a.lo[0], b.lo[0]), std::max(a.lo[1], b.lo[1]), std::max(a.lo[2], b.lo[2])};
+        if (grids.cell_of(corner, level) != cell) return;
+        if (!cross(mesh, mesh.triangles[i], mesh.triangles[j])) return;
+        found.local().emplace_back(std::min(i, j), std::max(i, j));
+    };
+
+    for (int level = 0; level < grids.levels(); ++level) {
+        const std::vector<Entry>& entries = grids.entries(level);
+        std::vector<size_t> runs;
+        for (size_t e = 0; e < entries.size(); ++e)
+            if (e == 0 || entries[e].cell != entries[e - 1].cell) runs.push_back(e);
+        runs.push_back(entries.size());
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, runs.size() - 1), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t r = range.begin(); r != range.end(); ++r)
+                for (size_t e = runs[r]; e < runs[r + 1]; ++e)
+                    for (size_t f = e + 1; f < runs[r + 1]; ++f)
+                        test(entries[e].triangle, entries[f].triangle, level, entries[e].cell);
+        });
+    }
+    if (grids.levels() > 1)
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t t = range.begin(); t != range.end(); ++t)
+                for (int level = grids.level(t) + 1; level < grids.levels(); ++level) {
+                    const std::vector<Entry>& entries = grids.entries(level);
+                    grids.for_each_cell(boxes[t], level, [&](uint64_t cell) {
+                        auto it = std::lower_bound(entries.begin(), entries.end(), Entry{cell, 0});
+                        for (; it != entries.end() && it->cell == cell; ++it)
+                            test(uint32_t(t), it->triangle, level, cell);
+                    });
+                }
+        });
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    for (const auto& local : found) pairs.insert(pairs.end(), local.begin(), local.end());
+    return pairs;
+}
+
+}  // namespace fabvdb::volume
