@@ -2,21 +2,12 @@
 #include "volume/cavity_regions.h"
 
 #include <cmath>
-#include <numeric>
+
+#include "volume/mesh_shells.h"
 
 namespace fabvdb::volume {
 
 namespace {
-
-struct Components {
-    std::vector<uint32_t> parent;
-    explicit Components(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t find(uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    }
-    void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
-};
 
 //! Whether the ray from `origin` along a fixed generic direction crosses
 //! triangle abc (Möller–Trumbore).
@@ -41,52 +32,31 @@ bool ray_crosses(const Vec3& origin, const Vec3& a, const Vec3& b, const Vec3& c
 
 std::vector<CavityRegion> split_cavity_regions(const Mesh& cavity_surface) {
     const Mesh& mesh = cavity_surface;
-    Components components(mesh.vertices.size());
-    for (const Triangle& t : mesh.triangles) {
-        components.unite(t[0], t[1]);
-        components.unite(t[1], t[2]);
-    }
-    // Shells, numbered in order of first triangle.
-    std::vector<int> shell_of_root(mesh.vertices.size(), -1);
-    std::vector<std::vector<uint32_t>> shell_triangles;
-    for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-        const uint32_t root = components.find(mesh.triangles[t][0]);
-        if (shell_of_root[root] < 0) {
-            shell_of_root[root] = int(shell_triangles.size());
-            shell_triangles.emplace_back();
-        }
-        shell_triangles[size_t(shell_of_root[root])].push_back(t);
-    }
-    std::vector<double> shell_volume(shell_triangles.size(), 0.0);
-    for (size_t s = 0; s < shell_triangles.size(); ++s)
-        for (uint32_t t : shell_triangles[s]) {
-            const Triangle& tri = mesh.triangles[t];
-            shell_volume[s] += six_signed_tetrahedron_volume(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]) / 6.0;
-        }
+    const std::vector<MeshShell> shells = split_shells(mesh);
 
     // Each outer shell starts a region; each island joins the smallest outer
     // shell around one of its vertices.
-    std::vector<int> region_of_shell(shell_triangles.size(), -1);
+    std::vector<int> region_of_shell(shells.size(), -1);
     std::vector<size_t> region_outer;
-    for (size_t s = 0; s < shell_triangles.size(); ++s)
-        if (shell_volume[s] > 0.0) {
+    for (size_t s = 0; s < shells.size(); ++s)
+        if (shells[s].volume > 0.0) {
             region_of_shell[s] = int(region_outer.size());
             region_outer.push_back(s);
         }
-    for (size_t s = 0; s < shell_triangles.size(); ++s) {
+    for (size_t s = 0; s < shells.size(); ++s) {
         if (region_of_shell[s] >= 0) continue;
-        const Vec3& probe = mesh.vertices[mesh.triangles[shell_triangles[s].front()][0]];
+        const Vec3& probe = mesh.vertices[mesh.triangles[shells[s].triangles.front()][0]];
         double smallest = INFINITY;
         for (size_t r = 0; r < region_outer.size(); ++r) {
             const size_t outer = region_outer[r];
-            if (shell_volume[outer] >= smallest) continue;
+            if (shells[outer].volume >= smallest) continue;
             size_t crossings = 0;
-            for (uint32_t t : shell_triangles[outer]) {
+            for (uint32_t t : shells[outer].triangles) {
                 const Triangle& tri = mesh.triangles[t];
                 crossings += ray_crosses(probe, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
             }
             if (crossings % 2 == 1) {
-                smallest = shell_volume[outer];
+                smallest = shells[outer].volume;
                 region_of_shell[s] = int(r);
             }
         }
@@ -94,11 +64,11 @@ std::vector<CavityRegion> split_cavity_regions(const Mesh& cavity_surface) {
 
     std::vector<CavityRegion> regions(region_outer.size());
     std::vector<uint32_t> new_index(mesh.vertices.size(), UINT32_MAX);
-    for (size_t s = 0; s < shell_triangles.size(); ++s) {
+    for (size_t s = 0; s < shells.size(); ++s) {
         if (region_of_shell[s] < 0) continue;  // an island outside every outer shell bounds no void
         CavityRegion& region = regions[size_t(region_of_shell[s])];
-        region.volume += shell_volume[s];
-        for (uint32_t t : shell_triangles[s]) {
+        region.volume += shells[s].volume;
+        for (uint32_t t : shells[s].triangles) {
             Triangle out;
             for (int k = 0; k < 3; ++k) {
                 const uint32_t v = mesh.triangles[t][k];

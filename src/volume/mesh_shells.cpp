@@ -1,0 +1,64 @@
+//! Shells of a mesh (see mesh_shells.h).
+#include "volume/mesh_shells.h"
+
+#include <numeric>
+
+namespace fabvdb::volume {
+
+namespace {
+
+struct Components {
+    std::vector<uint32_t> parent;
+    explicit Components(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t find(uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    }
+    void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+std::vector<MeshShell> split_shells(const Mesh& mesh) {
+    Components components(mesh.vertices.size());
+    for (const Triangle& t : mesh.triangles) {
+        components.unite(t[0], t[1]);
+        components.unite(t[1], t[2]);
+    }
+    std::vector<int> shell_of_root(mesh.vertices.size(), -1);
+    std::vector<MeshShell> shells;
+    for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+        const Triangle& tri = mesh.triangles[t];
+        const uint32_t root = components.find(tri[0]);
+        if (shell_of_root[root] < 0) {
+            shell_of_root[root] = int(shells.size());
+            shells.emplace_back();
+        }
+        MeshShell& shell = shells[size_t(shell_of_root[root])];
+        shell.triangles.push_back(t);
+        shell.volume +=
+            six_signed_tetrahedron_volume(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]) / 6.0;
+    }
+    return shells;
+}
+
+Mesh sub_mesh(const Mesh& mesh, const std::vector<uint32_t>& triangles) {
+    Mesh out;
+    std::vector<uint32_t> new_index(mesh.vertices.size(), UINT32_MAX);
+    out.triangles.reserve(triangles.size());
+    for (uint32_t t : triangles) {
+        Triangle copy;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = mesh.triangles[t][k];
+            if (new_index[v] == UINT32_MAX) {
+                new_index[v] = uint32_t(out.vertices.size());
+                out.vertices.push_back(mesh.vertices[v]);
+            }
+            copy[k] = new_index[v];
+        }
+        out.triangles.push_back(copy);
+    }
+    return out;
+}
+
+}  // namespace fabvdb::volume

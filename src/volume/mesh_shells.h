@@ -1,0 +1,24 @@
+//! Splits a triangle mesh into its shells: the connected components of
+//! triangles sharing vertices, numbered in the order of their first triangle,
+//! each with its signed volume (divergence theorem: positive for a closed
+//! shell facing out, negative for one facing in). Pure.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/mesh.h"
+
+namespace fabvdb::volume {
+
+struct MeshShell {
+    std::vector<uint32_t> triangles;  //!< indices into the mesh's triangles
+    double volume = 0.0;              //!< mm³, signed
+};
+
+std::vector<MeshShell> split_shells(const Mesh& mesh);
+
+//! The triangles of `mesh` listed in `triangles`, with only the vertices they use.
+Mesh sub_mesh(const Mesh& mesh, const std::vector<uint32_t>& triangles);
+
+}  // namespace fabvdb::volume
