@@ -5,12 +5,10 @@
 #include <cmath>
 #include <limits>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "volume/crossing_pairs.h"
 #include "volume/nearest_triangle.h"
 
 namespace fabvdb::volume {
@@ -24,25 +22,6 @@ Vec3d vec(const Vec3& p) { return Vec3d(p[0], p[1], p[2]); }
 Vec3d normal(const Mesh& mesh, const Triangle& t) {
     const Vec3d a = vec(mesh.vertices[t[0]]);
     return (vec(mesh.vertices[t[1]]) - a).cross(vec(mesh.vertices[t[2]]) - a);
-}
-
-//! The triangle pairs of `mesh` that cross each other (CGAL, exact
-//! predicates); empty when the triangles do not form a manifold surface.
-std::vector<std::pair<uint32_t, uint32_t>> crossing_triangles(const Mesh& mesh) {
-    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-    using Surface = CGAL::Surface_mesh<Kernel::Point_3>;
-    Surface surface;
-    std::vector<Surface::Vertex_index> vertex;
-    vertex.reserve(mesh.vertices.size());
-    for (const Vec3& p : mesh.vertices) vertex.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
-    for (const Triangle& t : mesh.triangles)
-        if (surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) == Surface::null_face()) return {};
-    std::vector<std::pair<Surface::Face_index, Surface::Face_index>> faces;
-    CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(surface,
-                                                                                          std::back_inserter(faces));
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;
-    for (const auto& [a, b] : faces) pairs.emplace_back(uint32_t(a.idx()), uint32_t(b.idx()));
-    return pairs;
 }
 
 }  // namespace
@@ -115,7 +94,7 @@ SnapStats snap_to_offset(Mesh& cavity, const Mesh& outer, const openvdb::Int32Gr
     progress.update(0.8);
     for (int round = 0; round < 8; ++round) {
         std::vector<uint32_t> now_reverted;
-        for (const auto& [a, b] : crossing_triangles(cavity))
+        for (const auto& [a, b] : crossing_pairs(cavity))
             for (uint32_t t : {a, b})
                 for (uint32_t v : cavity.triangles[t])
                     if (moved[v]) {
