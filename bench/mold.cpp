@@ -4,7 +4,8 @@
 // the input; per-stage seconds from the progress callback, plus the figures a
 // maker checks (parts, added volume, distance ratios, triangles).
 // Usage: bench_mold [model ...] (default: bunny.off kitten.obj fertility.off)
-//        environment FABVDB_BENCH_VOXEL=mm to override the default voxel.
+//        environment FABVDB_BENCH_VOXEL=mm to override the default voxel,
+//        FABVDB_BENCH_DEFORM=0 to run without the ARAP overhang deformation.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -73,6 +74,7 @@ int main(int argc, char** argv) {
 
             fabvdb::surface::MoldGenerationOptions options;
             if (voxel) options.voxel_size = std::atof(voxel);
+            if (const char* deform = std::getenv("FABVDB_BENCH_DEFORM")) options.deform_overhangs = std::atoi(deform) != 0;
             const auto molds = fabvdb::surface::generate_molds(input, model, options, progress);
             timer.finish();
             const double total = std::chrono::duration<double>(Clock::now() - start).count();
@@ -92,6 +94,14 @@ int main(int argc, char** argv) {
                         100 * added / restored, 100 * molds.mean_distance / molds.diagonal,
                         100 * molds.max_distance / molds.diagonal, part_triangles, mold_triangles, decompose_seconds,
                         total);
+            for (const auto& part : molds.parts)
+                std::printf("  part %d: restored %.0f mm3, ARAP %zu handles, moved max %.3f mean %.3f mm, "
+                            "volume change %+.1f mm3; sweep added %.0f mm3 (%.2f%%), kept out %.0f mm3; "
+                            "distance mean %.4f%% max %.3f%%\n",
+                            part.id, part.restored_volume, part.deformation_handles, part.deformation_max,
+                            part.deformation_mean, part.deformed_volume_change, part.added_volume,
+                            100 * part.added_volume / part.restored_volume, part.removed_by_keep_out,
+                            100 * part.mean_distance / molds.diagonal, 100 * part.max_distance / molds.diagonal);
             for (const auto& [stage, seconds] : molds.seconds)
                 std::printf("  mold stage %-28s %8.2f s\n", stage.c_str(), seconds);
             for (const auto& [stage, seconds] : timer.seconds)

@@ -550,13 +550,15 @@ FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
 
 /* Turns each part of a mold decomposition of `mesh` into a cast-ready part and
  * a two-piece rigid mold (thesis section 3.6): the part's outer surface
- * restored from the full-resolution mesh, the part swept into a double height
- * field along its parting direction (the added volume kept out of the other
- * parts), then a block split by a smooth RBF parting surface through the
- * parting line, with a gate at the parting line's lowest point (when the
- * mold stands for pouring), a runner and a sprue to the block's top, vents, and registration pins and holes, made by
- * exact CGAL booleans. The ARAP deformation of section 3.6.2 is not in this
- * version: overhangs are removed by adding material only.
+ * restored from the full-resolution mesh, gaps along its parting direction
+ * up to two voxels wide closed by an ARAP deformation (CGAL
+ * Surface_mesh_deformation; the surface moves at most about a voxel), the
+ * part swept into a double height field along its parting direction (the
+ * added volume kept out of the other parts), then a block split by a smooth
+ * RBF parting surface through the parting line, with a gate at the parting
+ * line's lowest point (when the mold stands for pouring), a runner and a
+ * sprue to the block's top, vents, and registration pins and holes, made by
+ * exact CGAL booleans (rounded to float coordinates, as STL stores them).
  * mesh: borrowed; the model the decomposition was made for.
  * decomposition_path: a decomposition.json written by fabvdb_mesh_decompose
  *   for this mesh at this scale, or NULL to run the decomposition first with
@@ -572,7 +574,9 @@ FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
  * out_report: NULL, or receives a report (owned by the caller): voxel_size,
  *   margin, density, diagonal, part_count, parts [{id, file, top_file,
  *   bottom_file, parting_direction, volume (mm^3), weight (g),
- *   restored_volume, added_volume, added_volume_ratio, removed_by_keep_out,
+ *   restored_volume, deformation {handles, max_displacement (mm),
+ *   mean_displacement (mm), volume_change (mm^3)}, added_volume (by the
+ *   sweep), added_volume_ratio, removed_by_keep_out,
  *   mean_distance_ratio, hausdorff_ratio, mold {size [e1, up, d] mm, center,
  *   up, gates, vents} or, with FABVDB_MOLD_COMMON, common_mold_offset}],
  *   common_mold {top_file, bottom_file, size, gates, vents} (row

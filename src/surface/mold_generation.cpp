@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "surface/overhang_deformation.h"
 #include "surface/surface_distance.h"
 #include "volume/detail_restoration.h"
 #include "volume/double_height_field_mesh.h"
@@ -80,6 +81,8 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     if (model.parts.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the decomposition has no parts");
     if (!(options.voxel_size >= 0) || !std::isfinite(options.voxel_size))
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the voxel size must be >= 0");
+    if (!(options.max_deformation >= 0) || !std::isfinite(options.max_deformation))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the maximum deformation must be >= 0");
     MoldGeneration result;
     result.diagonal = bounding_box(input).diagonal();
     result.voxel_size = options.voxel_size > 0 ? options.voxel_size : result.diagonal / 250.0;
@@ -104,6 +107,24 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         volume::restore_part_details(*input_grid, solids, restoration, progress);
     clock.lap("detail restoration");
 
+    // Small gaps closed by deformation before anything is swept; each part's
+    // gaps must be empty of the other parts (as restored or as deformed).
+    std::vector<OverhangDeformation> deformations(model.parts.size());
+    if (options.deform_overhangs) {
+        OverhangDeformationOptions deformation_options;
+        deformation_options.max_displacement =
+            options.max_deformation > 0 ? options.max_deformation : result.voxel_size;
+        for (size_t p = 0; p < model.parts.size(); ++p) {
+            std::vector<openvdb::FloatGrid::ConstPtr> others;
+            for (size_t q = 0; q < model.parts.size(); ++q)
+                if (q != p) others.push_back(restored[q]);
+            deformations[p] = deform_overhangs(*restored[p], model.parts[p].direction, others, deformation_options,
+                                               progress);
+            restored[p] = deformations[p].part;
+        }
+        clock.lap("overhang deformation");
+    }
+
     // Parts in order; each keeps out of the parts made before it (as made)
     // and of those still to come (as restored), so no two overlap.
     std::vector<openvdb::FloatGrid::Ptr> made(model.parts.size());
@@ -121,9 +142,14 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         cast.id = model.parts[p].id;
         cast.direction = model.parts[p].direction;
         cast.part = volume::double_height_field_mesh(*made[p], progress);
-        cast.restored_volume = stats.volume_before;
+        const OverhangDeformation& deformation = deformations[p];
+        cast.deformed_volume_change = deformation.volume_after - deformation.volume_before;
+        cast.restored_volume = stats.volume_before - cast.deformed_volume_change;
+        cast.deformation_handles = deformation.handles;
+        cast.deformation_max = deformation.max_displacement;
+        cast.deformation_mean = deformation.mean_displacement;
         cast.volume = signed_volume(cast.part);
-        cast.added_volume = cast.volume - cast.restored_volume;
+        cast.added_volume = cast.volume - cast.restored_volume - cast.deformed_volume_change;
         cast.removed_by_keep_out = stats.removed_by_keep_out;
         clock.lap("part surface");
         if (!options.common_mold) {

@@ -2,7 +2,8 @@
 //! the decomposition, in order,
 //!  1. detail restoration: its outer surface back from the full-resolution
 //!     input's level set (volume/detail_restoration.h);
-//!  2. moldability enforcement: the part swept into a double height field
+//!  2. moldability enforcement: small gaps along the parting direction closed
+//!     by ARAP deformation (overhang_deformation.h), then the part swept into a double height field
 //!     along its parting direction, the added volume kept out of the other
 //!     parts (the parts already made and the restored ones still to come), and
 //!     meshed as an exact double height field (volume/sweep.h,
@@ -30,6 +31,12 @@ namespace fabvdb::surface {
 struct MoldGenerationOptions {
     //! Voxel of the level sets, mm; 0: the input's bounding-box diagonal / 250.
     double voxel_size = 0.0;
+    //! mm: how far the ARAP deformation may move a surface point to close a
+    //! small gap (overhang_deformation.h); 0: one voxel. Gaps wider than
+    //! twice this are left to the sweep.
+    double max_deformation = 0.0;
+    //! false: no deformation, the sweep alone makes the parts moldable.
+    bool deform_overhangs = true;
     //! Mold block margin and parting-surface grid step (mold_assembly.h).
     MoldOptions mold;
     //! One mold pair for all the parts in a row instead of one per part.
@@ -48,7 +55,11 @@ struct CastPart {
     Vec3 common_mold_offset{0, 0, 0};  //!< with common_mold: see assemble_common_mold
     double restored_volume = 0;   //!< mm³, after detail restoration
     double volume = 0;            //!< mm³, of `part`
-    double added_volume = 0;      //!< volume − restored_volume: what moldability enforcement added
+    size_t deformation_handles = 0;     //!< surface vertices pulled across a gap by ARAP
+    double deformation_max = 0;         //!< mm, the largest ARAP displacement of a surface vertex
+    double deformation_mean = 0;        //!< mm, the mean over the vertices that moved
+    double deformed_volume_change = 0;  //!< mm³, volume after ARAP − restored_volume
+    double added_volume = 0;      //!< volume − restored_volume − deformed_volume_change: what the sweep added
     double removed_by_keep_out = 0;  //!< mm³ the sweep would have added inside other parts
     double mean_distance = 0;     //!< mm, from the input vertices nearest to this part
     double max_distance = 0;
