@@ -558,7 +558,7 @@ FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
  * RBF parting surface through the parting line, with a gate at the parting
  * line's lowest point (when the mold stands for pouring), a runner and a
  * sprue to the block's top, vents, and registration pins and holes, made by
- * exact CGAL booleans (rounded to float coordinates, as STL stores them).
+ * exact CGAL booleans.
  * mesh: borrowed; the model the decomposition was made for.
  * decomposition_path: a decomposition.json written by fabvdb_mesh_decompose
  *   for this mesh at this scale, or NULL to run the decomposition first with
