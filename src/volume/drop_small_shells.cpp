@@ -1,6 +1,8 @@
 //! Removal of small shells from a level set (see drop_small_shells.h).
 #include "volume/drop_small_shells.h"
 
+#include <algorithm>
+
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetUtil.h>
@@ -12,14 +14,19 @@ namespace fabvdb::volume {
 ShellCounts drop_small_shells(openvdb::FloatGrid::Ptr& grid, double min_volume, Progress& progress) {
     if (!(min_volume >= 0.0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "minimum shell volume must be >= 0");
     progress.stage("shells");
+    ShellCounts counts;
+    if (min_volume == 0.0) {
+        // Counting needs only the connected pieces of the zero-crossing mask,
+        // which segmentSDF splits by, not the pieces' own level sets.
+        std::vector<openvdb::BoolGrid::Ptr> pieces;
+        openvdb::tools::extractActiveVoxelSegmentMasks(*openvdb::tools::extractIsosurfaceMask(*grid, 0.0f), pieces);
+        progress.check();
+        counts.kept = std::max<uint64_t>(1, pieces.size());
+        return counts;
+    }
     std::vector<openvdb::FloatGrid::Ptr> shells;
     openvdb::tools::segmentSDF(*grid, shells);
     progress.check();
-    ShellCounts counts;
-    if (min_volume == 0.0) {
-        counts.kept = shells.size();
-        return counts;
-    }
     std::vector<openvdb::FloatGrid::Ptr> kept;
     for (size_t i = 0; i < shells.size(); ++i) {
         if (openvdb::tools::levelSetVolume(*shells[i]) >= min_volume)

@@ -264,6 +264,18 @@ TEST(Repair, SmallShellsAreDroppedAndCounted) {
     for (const auto& v : result.mesh.vertices) EXPECT_LT(v[0], 15.0);
 }
 
+TEST(Repair, EveryDisjointSolidCountsAsAShell) {
+    const Mesh mesh = fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 5.0, 3),
+                                           fabvdb::test::make_box({10, 0, 0}, {12, 2, 2}));
+    fabvdb::Progress progress;
+    volume::RepairOptions options;
+    options.distance.voxel_size = 0.25;
+    options.extract = false;
+    const volume::RepairResult result = volume::repair(mesh, options, progress);
+    EXPECT_EQ(result.shells_kept, 2u);
+    EXPECT_EQ(result.shells_dropped, 0u);
+}
+
 TEST(Repair, CancelledGivesNoResult) {
     std::atomic<bool> cancel{false};
     fabvdb::Progress progress(
