@@ -253,10 +253,17 @@ void grow_inward(const Mesh& surface, double depth, openvdb::FloatGrid& distance
     std::vector<Coord> frontier;
     for (auto it = distance.cbeginValueOn(); it; ++it)
         if (*it < 0.0f) frontier.push_back(it.getCoord());
-    const double deepest = depth + 3.0 * voxel;
-    std::vector<Coord> deferred;
+    const double deepest = depth + voxel;
+    // Voxels found deeper than the current depth, with their estimate: it
+    // changes only when a neighbour joins, which finds them again.
+    struct Waiting {
+        Coord voxel;
+        float value;
+        int32_t winner;
+    };
+    std::vector<Waiting> waiting;
     double accept = 2.0 * voxel;
-    for (int layer = 0; accept <= deepest + voxel && (!frontier.empty() || !deferred.empty());
+    for (int layer = 0; accept <= deepest + voxel && (!frontier.empty() || !waiting.empty());
          ++layer, accept += voxel) {
         const int reach = layer == 0 ? 1 : 3;  // |dx| + |dy| + |dz| at most: faces, then all 26
         tbb::enumerable_thread_specific<std::vector<Coord>> local_found;
@@ -275,8 +282,6 @@ void grow_inward(const Mesh& surface, double depth, openvdb::FloatGrid& distance
                           });
         std::vector<Coord> found;
         for (auto& part : local_found) found.insert(found.end(), part.begin(), part.end());
-        found.insert(found.end(), deferred.begin(), deferred.end());
-        deferred.clear();
         tbb::parallel_sort(found.begin(), found.end());
         found.erase(std::unique(found.begin(), found.end()), found.end());
 
@@ -284,15 +289,20 @@ void grow_inward(const Mesh& surface, double depth, openvdb::FloatGrid& distance
         std::vector<int32_t> winner;
         nearest_from_neighbours(distance_grid, search, found, value, winner, progress);
         frontier.clear();
-        for (size_t i = 0; i < found.size(); ++i) {
-            if (-value[i] > accept) {
-                deferred.push_back(found[i]);
-                continue;
+        std::vector<Waiting> still_waiting;
+        const auto take = [&](const Coord& c, float v, int32_t t) {
+            if (-v > accept) {
+                still_waiting.push_back({c, v, t});
+                return;
             }
-            distance.setValueOn(found[i], value[i]);
-            nearest.setValueOn(found[i], winner[i]);
-            frontier.push_back(found[i]);
-        }
+            distance.setValueOn(c, v);
+            nearest.setValueOn(c, t);
+            frontier.push_back(c);
+        };
+        for (size_t i = 0; i < found.size(); ++i) take(found[i], value[i], winner[i]);
+        for (const Waiting& w : waiting)
+            if (!std::binary_search(found.begin(), found.end(), w.voxel)) take(w.voxel, w.value, w.winner);
+        waiting = std::move(still_waiting);
         progress.update(0.5 + 0.3 * std::min(1.0, accept / deepest));
     }
 }

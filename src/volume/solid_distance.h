@@ -7,7 +7,7 @@
 //! parallel, no shared writes), and the sign is that of the angle-weighted
 //! pseudonormal of the nearest feature (face, edge or corner; Bærentzen and
 //! Aanæs 2005: exact on such surfaces). Inward, the band grows in order of
-//! distance, a voxel deep at a time, until it is `interior_depth` + 3 voxels
+//! distance, a voxel deep at a time, until it is `interior_depth` + 2 voxels
 //! deep: a new voxel takes the nearest of its neighbours' nearest triangles,
 //! at its exact distance to it (closest-triangle propagation: a distance can
 //! only be too large, where the true nearest triangle is no neighbour's;
