@@ -217,7 +217,6 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
                 grains[g] = i;
                 continue;
             }
-            if (z + 1 < n[2] && cells[i + 1] == kGrain) continue;  // buried
             // Topple toward the steepest direction that exceeds the repose.
             int best = -1;
             double best_slope = 0.0;

@@ -4,8 +4,10 @@
 //! is filled with powder; the holes are drilled cylinders open to the
 //! outside. For each turn of the routine the part is voxelised in a frame
 //! whose z axis points up (against that turn's gravity); then, until nothing
-//! moves, a grain falls while the cell below it is free, and a grain on the
-//! surface of the pile topples one cell sideways toward the steepest
+//! moves, a grain falls while the cell below it is free, and a grain with a
+//! free cell beside it (on the pile's top, or on a face the pile shows
+//! sideways, as over an opening in a side wall: grains above do not hold a
+//! face up) topples one cell sideways toward the steepest
 //! direction where the ground, within `slope_window` cells, lies lower than
 //! the angle of repose allows (drops in whole cells, rounded up, so a
 //! staircase drawn at exactly the angle stays; the ground seen ahead falls

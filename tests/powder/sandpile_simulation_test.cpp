@@ -1,7 +1,10 @@
 // The reference sand-pile simulation on a hollow sphere: powder is conserved
 // without holes in every turn; a hole at the bottom drains; no hole on top
-// drains while the part stays upright; cancellation.
+// drains while the part stays upright; a shaft drains through an outlet in
+// its side down to the angle of repose; cancellation.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "cavity_shapes.h"
 #include "core/error.h"
@@ -37,6 +40,28 @@ TEST(Sandpile, BottomHoleDrainsTopHoleDoesNotWhileUpright) {
     const auto turned =
         fabvdb::powder::simulate_sandpile(*part.shell, {{{0, 0, 10}, {0, 0, 1}, 4.0, 6.0}}, options, progress);
     EXPECT_LT(turned.residual_fraction(), 0.5);
+}
+
+// A shaft 6 x 6 x 24 mm, full, with an outlet at the foot of a side wall
+// drilled 45° down: the column above the outlet must not stand on its face.
+// What stays is what lies under the repose slope rising from the outlet's
+// lip on the floor (|y| <= 1.41 mm where the tilted drill meets the floor):
+// 78 mm³, 9.1% of the shaft by integration.
+TEST(Sandpile, ShaftDrainsThroughASideOutletDownToTheRepose) {
+    openvdb::initialize();
+    const double voxel = 0.25;
+    auto cavity = fabvdb::test::box({-3, -3, 0}, {3, 3, 24}, voxel);
+    auto part = fabvdb::test::box({-5, -5, -2}, {5, 5, 26}, voxel);
+    const auto shaft = fabvdb::test::finish(part, cavity);
+    fabvdb::powder::SandpileOptions options;
+    options.cell_size = 0.5;
+    options.routine = {{0, 0, -1}};
+    fabvdb::Progress progress;
+    const double diagonal = std::sqrt(0.5);
+    const auto result = fabvdb::powder::simulate_sandpile(
+        *shaft.shell, {{{-3, 0, 2}, {-diagonal, 0, -diagonal}, 4.0, 8.0}}, options, progress);
+    EXPECT_NEAR(result.initial_volume, 864.0, 0.05 * 864.0);
+    EXPECT_NEAR(result.residual_fraction(), 0.091, 0.03);
 }
 
 TEST(Sandpile, CancelledSimulationThrowsCancelled) {
