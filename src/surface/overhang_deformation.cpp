@@ -24,6 +24,7 @@
 #include "surface/vec3_ops.h"
 #include "volume/extract_mesh.h"
 #include "volume/progress_interrupter.h"
+#include "volume/require_level_set.h"
 
 namespace fabvdb::surface {
 
@@ -40,11 +41,6 @@ struct Handle {
     uint32_t vertex = 0;
     Vec3 target{0, 0, 0};
 };
-
-void require_level_set(const openvdb::FloatGrid& grid, const char* what) {
-    if (grid.getGridClass() != openvdb::GRID_LEVEL_SET || !grid.hasUniformVoxels())
-        throw Error(FABVDB_ERR_INVALID_ARGUMENT, std::string(what) + " is not a level set with uniform voxels");
-}
 
 //! Area-weighted vertex normals (unnormalised sums of face cross products).
 std::vector<Vec3> vertex_normals(const Mesh& mesh) {
@@ -241,10 +237,10 @@ void replace_near_moved(openvdb::FloatGrid& part, const openvdb::FloatGrid& defo
 OverhangDeformation deform_overhangs(const openvdb::FloatGrid& part, const Vec3& direction,
                                      const std::vector<openvdb::FloatGrid::ConstPtr>& keep_out,
                                      const OverhangDeformationOptions& options, Progress& progress) {
-    require_level_set(part, "the part");
+    volume::require_level_set(part, "the part");
     for (const auto& solid : keep_out) {
         if (!solid) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "a keep-out solid is null");
-        require_level_set(*solid, "a keep-out solid");
+        volume::require_level_set(*solid, "a keep-out solid");
     }
     if (!(options.max_displacement > 0) || !std::isfinite(options.max_displacement) ||
         !(options.region_radius >= 0) || !std::isfinite(options.region_radius) || options.iterations < 1)

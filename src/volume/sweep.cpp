@@ -18,15 +18,11 @@
 #include "core/error.h"
 #include "volume/aligned_frame.h"
 #include "volume/progress_interrupter.h"
+#include "volume/require_level_set.h"
 
 namespace fabvdb::volume {
 
 namespace {
-
-void require_level_set(const openvdb::FloatGrid& grid, const char* what) {
-    if (grid.getGridClass() != openvdb::GRID_LEVEL_SET || !grid.hasUniformVoxels())
-        throw Error(FABVDB_ERR_INVALID_ARGUMENT, std::string(what) + " is not a level set with uniform voxels");
-}
 
 openvdb::FloatGrid::Ptr resampled(const openvdb::FloatGrid& grid, const openvdb::math::Transform::Ptr& transform,
                                   float background, ProgressInterrupter& interrupter, const Progress& progress) {
