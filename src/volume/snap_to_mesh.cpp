@@ -13,6 +13,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "volume/crossing_pairs.h"
+#include "volume/feature_targets.h"
 
 namespace fabvdb::volume {
 
@@ -30,6 +31,8 @@ constexpr double min_facing = 0.5;
 // A moved triangle keeps its orientation (cos of the turn) and some area.
 constexpr double min_turn = 0.2;
 constexpr double min_area_ratio = 0.05;
+// Sharp edges and corners draw vertices from this many max_distances.
+constexpr double feature_reach = 1.5;
 
 Point point(const Vec3& v) { return Point(v[0], v[1], v[2]); }
 
@@ -69,21 +72,29 @@ void move_onto_input(Mesh& surface, const Mesh& input, double max_distance, std:
     progress.update(0.2);
     progress.check();
 
-    std::vector<Vector> vertex_normal(surface.vertices.size(), Vector(0, 0, 0));
+    std::vector<Vec3> vertex_normal(surface.vertices.size(), Vec3{0, 0, 0});
     for (const Triangle& t : surface.triangles) {
         const Vector n = normal(surface, t);
-        for (uint32_t v : t) vertex_normal[v] = vertex_normal[v] + n;
+        for (uint32_t v : t)
+            for (int k = 0; k < 3; ++k) vertex_normal[v][k] += n[k];
     }
+    const FeatureTargets features = feature_targets(surface, vertex_normal, input, feature_reach * max_distance);
+    progress.check();
     const double max_squared = max_distance * max_distance;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, surface.vertices.size(), 4096),
                       [&](const tbb::blocked_range<size_t>& range) {
                           if (progress.cancelled()) return;
                           for (size_t v = range.begin(); v != range.end(); ++v) {
+                              if (features.has_target[v]) {
+                                  surface.vertices[v] = features.target[v];
+                                  moved[v] = 1;
+                                  continue;
+                              }
                               const Point p = point(surface.vertices[v]);
                               const auto [closest, primitive] = tree.closest_point_and_primitive(p);
                               if (CGAL::squared_distance(p, closest) > max_squared) continue;
                               const Vector n_input = primitive->supporting_plane().orthogonal_vector();
-                              const Vector& n_surface = vertex_normal[v];
+                              const Vector n_surface(vertex_normal[v][0], vertex_normal[v][1], vertex_normal[v][2]);
                               const double length = std::sqrt(n_input.squared_length() * n_surface.squared_length());
                               if (!(length > 0.0) || std::abs(n_input * n_surface) < min_facing * length) continue;
                               surface.vertices[v] = {closest.x(), closest.y(), closest.z()};

@@ -3,7 +3,9 @@
 //! vertex moves to its closest point on the input when that point is within
 //! `max_distance`, the input triangle there faces the same way as the surface
 //! around the vertex (so holes, interior and inverted triangles attract
-//! nothing), and no triangle around it flips or degenerates. Moves that would
+//! nothing), and no triangle around it flips or degenerates. Vertices nearest
+//! to the input's sharp edges and corners go onto them instead
+//! (feature_targets.h), so the extraction's chamfers disappear. Moves that would
 //! make two triangles cross (crossing_pairs.h) are undone; crossings where
 //! no vertex moved, i.e. of the surface as given, are reported. Topology is
 //! unchanged. Parallel; reports progress; throws Error(CANCELLED).
