@@ -24,6 +24,11 @@ constexpr double sharp_cos = 0.8;
 // A surface vertex is drawn by a feature only if its normal is within 60
 // degrees of one of the feature's triangles (not the far side of a thin wall).
 constexpr double min_facing = 0.5;
+// An edge draws it only if the normal of the input triangle closest to it is
+// also within 60 degrees of one of the edge's two (cos): a vertex on another
+// shell that a sharp edge passes under stays there. (Corners do not ask this: the
+// triangle closest to a vertex near a corner may be any around it.)
+constexpr double min_alignment = 0.5;
 
 Point point(const Vec3& v) { return Point(v[0], v[1], v[2]); }
 
@@ -124,8 +129,8 @@ private:
 
 }  // namespace
 
-FeatureTargets feature_targets(const Mesh& surface, const std::vector<Vec3>& surface_normals, const Mesh& input,
-                               double reach) {
+FeatureTargets feature_targets(const Mesh& surface, const std::vector<Vec3>& surface_normals,
+                               const std::vector<Vec3>& nearest_input_normals, const Mesh& input, double reach) {
     FeatureTargets targets;
     targets.has_target.assign(surface.vertices.size(), 0);
     targets.target.resize(surface.vertices.size());
@@ -135,6 +140,10 @@ FeatureTargets feature_targets(const Mesh& surface, const std::vector<Vec3>& sur
     const auto faces = [&](uint32_t v, const Vector& normal) {
         const Vector n = unit(Vector(surface_normals[v][0], surface_normals[v][1], surface_normals[v][2]));
         return n * normal >= min_facing;
+    };
+    const auto aligned = [&](uint32_t v, const Vector& normal) {
+        const Vec3& nearest = nearest_input_normals[v];
+        return faces(v, normal) && Vector(nearest[0], nearest[1], nearest[2]) * normal >= min_alignment;
     };
 
     // Corners: vertices with three or more sharp edges, or two that turn.
@@ -176,7 +185,7 @@ FeatureTargets feature_targets(const Mesh& surface, const std::vector<Vec3>& sur
         for (int i = 0; i <= steps; ++i) {
             const Point s = a + (b - a) * (double(i) / steps);
             const int64_t v = grid.nearest({s.x(), s.y(), s.z()}, [&](uint32_t v) {
-                return !corner_drawn[v] && (faces(v, edge.normal_a) || faces(v, edge.normal_b));
+                return !corner_drawn[v] && (aligned(v, edge.normal_a) || aligned(v, edge.normal_b));
             });
             if (v < 0) continue;
             const Point p = point(surface.vertices[v]);

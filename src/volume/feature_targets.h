@@ -7,7 +7,10 @@
 //! Each corner draws the surface vertex nearest to it, each sharp edge the
 //! vertex nearest to each of its samples (half a reach apart), onto the edge;
 //! only vertices within `reach` whose normal faces the feature's triangles
-//! are drawn. The caller keeps the safeguards (no flip, no crossing).
+//! are drawn, and to an edge only those whose closest input triangle faces
+//! within 60 degrees the way one of its two does (so the edges of a shell inside
+//! another, which the surface passes near where they pierce it, draw
+//! nothing). The caller keeps the safeguards (no flip, no crossing).
 #pragma once
 
 #include <vector>
@@ -22,8 +25,10 @@ struct FeatureTargets {
     std::vector<Vec3> target;
 };
 
-//! `surface_normals`: per surface vertex, a normal (any length) pointing out.
-FeatureTargets feature_targets(const Mesh& surface, const std::vector<Vec3>& surface_normals, const Mesh& input,
-                               double reach);
+//! `surface_normals`: per surface vertex, a normal (any length) pointing out;
+//! `nearest_input_normals`: per surface vertex, the unit normal of the input
+//! triangle closest to it.
+FeatureTargets feature_targets(const Mesh& surface, const std::vector<Vec3>& surface_normals,
+                               const std::vector<Vec3>& nearest_input_normals, const Mesh& input, double reach);
 
 }  // namespace fabvdb::volume

@@ -78,29 +78,39 @@ void move_onto_input(Mesh& surface, const Mesh& input, double max_distance, std:
         for (uint32_t v : t)
             for (int k = 0; k < 3; ++k) vertex_normal[v][k] += n[k];
     }
-    const FeatureTargets features = feature_targets(surface, vertex_normal, input, feature_reach * max_distance);
-    progress.check();
-    const double max_squared = max_distance * max_distance;
+    // The closest input point of each vertex and the unit normal there.
+    std::vector<Vec3> closest(surface.vertices.size()), input_normal(surface.vertices.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, surface.vertices.size(), 4096),
                       [&](const tbb::blocked_range<size_t>& range) {
                           if (progress.cancelled()) return;
                           for (size_t v = range.begin(); v != range.end(); ++v) {
-                              if (features.has_target[v]) {
-                                  surface.vertices[v] = features.target[v];
-                                  moved[v] = 1;
-                                  continue;
-                              }
-                              const Point p = point(surface.vertices[v]);
-                              const auto [closest, primitive] = tree.closest_point_and_primitive(p);
-                              if (CGAL::squared_distance(p, closest) > max_squared) continue;
-                              const Vector n_input = primitive->supporting_plane().orthogonal_vector();
-                              const Vector n_surface(vertex_normal[v][0], vertex_normal[v][1], vertex_normal[v][2]);
-                              const double length = std::sqrt(n_input.squared_length() * n_surface.squared_length());
-                              if (!(length > 0.0) || std::abs(n_input * n_surface) < min_facing * length) continue;
-                              surface.vertices[v] = {closest.x(), closest.y(), closest.z()};
-                              moved[v] = 1;
+                              const auto [point_on_input, primitive] =
+                                  tree.closest_point_and_primitive(point(surface.vertices[v]));
+                              const Vector n = primitive->supporting_plane().orthogonal_vector();
+                              const Vector unit_n = n / std::sqrt(n.squared_length());
+                              closest[v] = {point_on_input.x(), point_on_input.y(), point_on_input.z()};
+                              input_normal[v] = {unit_n.x(), unit_n.y(), unit_n.z()};
                           }
                       });
+    progress.check();
+    const FeatureTargets features =
+        feature_targets(surface, vertex_normal, input_normal, input, feature_reach * max_distance);
+    progress.check();
+    const double max_squared = max_distance * max_distance;
+    for (size_t v = 0; v < surface.vertices.size(); ++v) {
+        if (features.has_target[v]) {
+            surface.vertices[v] = features.target[v];
+            moved[v] = 1;
+            continue;
+        }
+        if (CGAL::squared_distance(point(surface.vertices[v]), point(closest[v])) > max_squared) continue;
+        const Vector n_input(input_normal[v][0], input_normal[v][1], input_normal[v][2]);
+        const Vector n_surface(vertex_normal[v][0], vertex_normal[v][1], vertex_normal[v][2]);
+        const double length = std::sqrt(n_surface.squared_length());
+        if (!(length > 0.0) || std::abs(n_input * n_surface) < min_facing * length) continue;
+        surface.vertices[v] = closest[v];
+        moved[v] = 1;
+    }
     progress.check();
 }
 

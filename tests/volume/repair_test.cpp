@@ -215,6 +215,25 @@ TEST(Repair, SharpCornersAndEdgesAreKept) {
     EXPECT_LE(distances(samples(out, 20000, 3), in).max, 0.05 * options.distance.voxel_size) << "output off the box";
 }
 
+// A box poking out of a ball (overlapping shells): the box's edges inside the
+// ball pass near the surface where they pierce it, but no output vertex goes
+// onto them, i.e. into the solid.
+TEST(Repair, EdgesOfAShellInsideAnotherDrawNothing) {
+    const Mesh ball = fabvdb::test::make_sphere({0, 0, 0}, 20.0, 4);
+    const Mesh box = fabvdb::test::make_box({10, -8, -8}, {40, 8, 8});
+    fabvdb::Progress progress;
+    volume::RepairOptions options;
+    options.distance.voxel_size = 0.5;
+    const volume::RepairResult result = volume::repair(fabvdb::test::merged(ball, box), options, progress);
+    double deepest = 0.0;
+    for (const auto& p : result.mesh.vertices) {
+        const double in_ball = 20.0 - std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        const double in_box = std::min({p[0] - 10.0, 40.0 - p[0], 8.0 - std::abs(p[1]), 8.0 - std::abs(p[2])});
+        deepest = std::max({deepest, in_ball, in_box});
+    }
+    EXPECT_LE(deepest, 0.2 * options.distance.voxel_size);
+}
+
 // Each variant of a solid repairs to the same volume as the clean solid.
 TEST(Repair, DirtyVariantsGiveTheSameSolid) {
     const Mesh ball = fabvdb::test::make_sphere({0, 0, 0}, 20.0, 4);
