@@ -34,12 +34,26 @@ BoundingBox bounding_box(const Mesh& mesh, bool referenced_only) {
     return box;
 }
 
-double triangle_area(const Mesh& mesh, const Triangle& t) {
+Vec3 triangle_normal(const Mesh& mesh, const Triangle& t) {
     const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
     const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+double triangle_area(const Mesh& mesh, const Triangle& t) {
+    const Vec3 n = triangle_normal(mesh, t);
     return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+std::vector<Vec3> area_weighted_vertex_normals(const Mesh& mesh) {
+    std::vector<Vec3> normals(mesh.vertices.size(), Vec3{0, 0, 0});
+    for (const Triangle& t : mesh.triangles) {
+        const Vec3 n = triangle_normal(mesh, t);
+        for (uint32_t v : t)
+            for (int k = 0; k < 3; ++k) normals[v][k] += n[k];
+    }
+    return normals;
 }
 
 double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c) {

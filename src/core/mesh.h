@@ -29,8 +29,14 @@ struct BoundingBox {
 //! `referenced_only` is false). Empty input gives a zero box.
 BoundingBox bounding_box(const Mesh& mesh, bool referenced_only = true);
 
+//! Cross product of two edges of one triangle (b - a) x (c - a): normal to
+//! it by the right-hand rule, twice its area long.
+Vec3 triangle_normal(const Mesh& mesh, const Triangle& t);
 //! Area of one triangle of the mesh.
 double triangle_area(const Mesh& mesh, const Triangle& t);
+//! Per vertex, the sum of its triangles' `triangle_normal`s (area-weighted,
+//! not normalised; zero for a vertex no triangle uses).
+std::vector<Vec3> area_weighted_vertex_normals(const Mesh& mesh);
 //! Six times the signed volume of the tetrahedron (origin, a, b, c).
 double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c);
 //! Signed volume enclosed by the triangles (divergence theorem about the

@@ -42,16 +42,6 @@ struct Handle {
     Vec3 target{0, 0, 0};
 };
 
-//! Area-weighted vertex normals (unnormalised sums of face cross products).
-std::vector<Vec3> vertex_normals(const Mesh& mesh) {
-    std::vector<Vec3> normals(mesh.vertices.size(), Vec3{0, 0, 0});
-    for (const Triangle& t : mesh.triangles) {
-        const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-        for (uint32_t v : t) normals[v] = normals[v] + n;
-    }
-    return normals;
-}
-
 //! Every vertex facing ±d (|n·d| >= 0.3) whose line along its facing side of
 //! d leaves the part and enters it again within `max_gap`, through space that
 //! no keep-out solid occupies, becomes a handle moved halfway across the gap,
@@ -64,7 +54,7 @@ std::vector<Handle> find_handles(const Mesh& mesh, const openvdb::FloatGrid& par
                                  const Progress& progress) {
     const double voxel = part.voxelSize()[0];
     const double step = 0.25 * voxel;
-    const std::vector<Vec3> normals = vertex_normals(mesh);
+    const std::vector<Vec3> normals = area_weighted_vertex_normals(mesh);
     std::vector<Handle> found(mesh.vertices.size(), Handle{no_vertex, {0, 0, 0}});
     touching.assign(mesh.vertices.size(), 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.vertices.size(), 1024), [&](const tbb::blocked_range<size_t>& range) {

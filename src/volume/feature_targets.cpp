@@ -38,8 +38,8 @@ Vector unit(const Vector& v) {
 }
 
 Vector unit_normal(const Mesh& mesh, const Triangle& t) {
-    return unit(CGAL::cross_product(point(mesh.vertices[t[1]]) - point(mesh.vertices[t[0]]),
-                                    point(mesh.vertices[t[2]]) - point(mesh.vertices[t[0]])));
+    const Vec3 n = triangle_normal(mesh, t);
+    return unit(Vector(n[0], n[1], n[2]));
 }
 
 struct SharpEdge {

@@ -37,8 +37,8 @@ constexpr double feature_reach = 1.5;
 Point point(const Vec3& v) { return Point(v[0], v[1], v[2]); }
 
 Vector normal(const Mesh& mesh, const Triangle& t) {
-    return CGAL::cross_product(point(mesh.vertices[t[1]]) - point(mesh.vertices[t[0]]),
-                               point(mesh.vertices[t[2]]) - point(mesh.vertices[t[0]]));
+    const Vec3 n = triangle_normal(mesh, t);
+    return Vector(n[0], n[1], n[2]);
 }
 
 // Moves the moved corners of triangle t back, marking them in went_back;
@@ -72,12 +72,7 @@ void move_onto_input(Mesh& surface, const Mesh& input, double max_distance, std:
     progress.update(0.2);
     progress.check();
 
-    std::vector<Vec3> vertex_normal(surface.vertices.size(), Vec3{0, 0, 0});
-    for (const Triangle& t : surface.triangles) {
-        const Vector n = normal(surface, t);
-        for (uint32_t v : t)
-            for (int k = 0; k < 3; ++k) vertex_normal[v][k] += n[k];
-    }
+    const std::vector<Vec3> vertex_normal = area_weighted_vertex_normals(surface);
     // The closest input point of each vertex and the unit normal there.
     std::vector<Vec3> closest(surface.vertices.size()), input_normal(surface.vertices.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, surface.vertices.size(), 4096),
