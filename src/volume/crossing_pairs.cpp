@@ -6,6 +6,13 @@
 //! cell; a triangle meets the larger ones by looking up the cells its box
 //! overlaps in each coarser level. A pair of overlapping boxes is tested only
 //! in the cell holding the lowest corner of their common box, so once.
+//!
+//! Neighbours are the most of the pairs met. Around a vertex whose triangles,
+//! seen along their summed normal, turn the same way (certain by the filter)
+//! and wind once around it, each triangle projects one to one into its own
+//! angular sector: two of them meet only in the projection of what they
+//! share, so only along it. Pairs that share such a vertex, or an edge at one,
+//! are not tested.
 #include "volume/crossing_pairs.h"
 
 #include <algorithm>
@@ -74,12 +81,20 @@ public:
             top_level = std::max(top_level, level);
         }
         // Each triangle's cells go to its own slots of its level, in parallel.
+        low_cell_.resize(boxes.size());
         std::vector<size_t> slot(boxes.size(), 0);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size()), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t t = range.begin(); t != range.end(); ++t) {
+                low_cell_[t] = cell_of(boxes[t].lo, level_[t]);
+                for_each_cell(boxes[t], level_[t], [&](uint64_t) { ++slot[t]; });
+            }
+        });
         entries_.resize(size_t(top_level) + 1);
         std::vector<size_t> level_size(entries_.size(), 0);
         for (size_t t = 0; t < boxes.size(); ++t) {
+            const size_t cells = slot[t];
             slot[t] = level_size[level_[t]];
-            for_each_cell(boxes[t], level_[t], [&](uint64_t) { ++level_size[level_[t]]; });
+            level_size[level_[t]] += cells;
         }
         for (size_t level = 0; level < entries_.size(); ++level) entries_[level].resize(level_size[level]);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size()), [&](const tbb::blocked_range<size_t>& range) {
@@ -93,6 +108,8 @@ public:
 
     int levels() const { return int(entries_.size()); }
     int level(size_t t) const { return level_[t]; }
+    //! The cell of its own level that holds the lowest corner of t's box.
+    uint64_t low_cell(size_t t) const { return low_cell_[t]; }
     const std::vector<Entry>& entries(int level) const { return entries_[level]; }
 
     uint64_t cell_of(const double* p, int level) const {
@@ -101,6 +118,16 @@ public:
         for (int k = 0; k < 3; ++k)
             key = key << cell_bits | uint64_t(std::clamp(int64_t(std::floor((p[k] - origin_[k]) / size)), int64_t(0),
                                                          cells_per_axis - 1));
+        return key;
+    }
+
+    //! The cell holding the lowest corner of the common box of two boxes
+    //! whose lowest corners lie in cells `a` and `b` of one level.
+    static uint64_t common_low_cell(uint64_t a, uint64_t b) {
+        const uint64_t mask = cells_per_axis - 1;
+        uint64_t key = 0;
+        for (int shift = 2 * cell_bits; shift >= 0; shift -= cell_bits)
+            key |= std::max((a >> shift) & mask, (b >> shift) & mask) << shift;
         return key;
     }
 
@@ -117,6 +144,7 @@ private:
     double origin_[3] = {0, 0, 0};
     double base_ = 1.0;
     std::vector<uint8_t> level_;
+    std::vector<uint64_t> low_cell_;
     std::vector<std::vector<Entry>> entries_;
 };
 
@@ -184,18 +212,99 @@ bool segment_certainly_misses(const Vec3& v, const Vec3& a, const Vec3& b, const
             certain_sign(dot(toward_a, vq), lb * lb * la * lq) < 0);
 }
 
-// Whether triangles a and b meet other than along what they share.
-bool cross(const Mesh& mesh, const Triangle& a, const Triangle& b) {
+// Whether the triangles around vertex `centre` (`around`, `count` of them)
+// wind once around it, seen along their summed normal, each turning the same
+// way: the link edges a -> b of the triangles (centre, a, b) chain into one
+// cycle, every turn is certainly positive, and the angular sectors (a, b] of
+// the projected triangles cover the direction of the first link vertex once
+// (the one ending there, certainly no other).
+bool fan_is_embedded(const Mesh& mesh, uint32_t centre, const uint32_t* around, size_t count) {
+    constexpr size_t max_fan = 64;
+    if (count < 3 || count > max_fan) return false;
+    uint32_t from[max_fan], to[max_fan];
+    for (size_t k = 0; k < count; ++k) {
+        const Triangle& t = mesh.triangles[around[k]];
+        const int corner = t[0] == centre ? 0 : t[1] == centre ? 1 : 2;
+        from[k] = t[(corner + 1) % 3];
+        to[k] = t[(corner + 2) % 3];
+        if (from[k] == centre || to[k] == centre || from[k] == to[k]) return false;
+        for (size_t j = 0; j < k; ++j)
+            if (from[j] == from[k]) return false;
+    }
+    size_t steps = 1;
+    for (uint32_t at = to[0]; at != from[0]; ++steps) {
+        const size_t next = size_t(std::find(from, from + count, at) - from);
+        if (next == count || steps == count) return false;
+        at = to[next];
+    }
+    if (steps != count) return false;
+
+    const Vec3& c = mesh.vertices[centre];
+    Vec normal = {0.0, 0.0, 0.0};
+    for (size_t k = 0; k < count; ++k) {
+        const Vec turn = cross_product(minus(mesh.vertices[from[k]], c), minus(mesh.vertices[to[k]], c));
+        for (int axis = 0; axis < 3; ++axis) normal[axis] += turn[axis];
+    }
+    const double normal_squared = dot(normal, normal);
+    if (!(normal_squared > 0.0)) return false;
+    const Vec reference = minus(mesh.vertices[from[0]], c);
+    const double reference_squared = dot(reference, reference);
+    for (size_t k = 0; k < count; ++k) {
+        const Vec a = minus(mesh.vertices[from[k]], c), b = minus(mesh.vertices[to[k]], c);
+        const double a_squared = dot(a, a), b_squared = dot(b, b);
+        if (certain_sign(dot(normal, cross_product(a, b)), normal_squared * a_squared * b_squared) <= 0) return false;
+        if (k == 0 || to[k] == from[0]) continue;
+        // The sector (a, b], narrower than a half turn, holds the reference
+        // direction when it lies after a and not after b.
+        if (certain_sign(dot(normal, cross_product(a, reference)), normal_squared * a_squared * reference_squared) >= 0 &&
+            certain_sign(dot(normal, cross_product(reference, b)), normal_squared * reference_squared * b_squared) >= 0)
+            return false;
+    }
+    return true;
+}
+
+// Per vertex, whether fan_is_embedded holds; computed for the vertices of
+// the candidate triangles only (all when there are no candidates).
+std::vector<char> embedded_fans(const Mesh& mesh, const std::vector<char>& candidates) {
+    const size_t vertex_count = mesh.vertices.size();
+    std::vector<uint32_t> first(vertex_count + 1, 0);
+    for (const Triangle& t : mesh.triangles)
+        for (uint32_t v : t) ++first[v + 1];
+    for (size_t v = 0; v < vertex_count; ++v) first[v + 1] += first[v];
+    std::vector<uint32_t> around(first[vertex_count]);
+    {
+        std::vector<uint32_t> filled(first.begin(), first.end() - 1);
+        for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
+            for (uint32_t v : mesh.triangles[t]) around[filled[v]++] = t;
+    }
+    std::vector<char> wanted(vertex_count, candidates.empty());
+    for (size_t t = 0; t < candidates.size(); ++t)
+        if (candidates[t])
+            for (uint32_t v : mesh.triangles[t]) wanted[v] = 1;
+    std::vector<char> embedded(vertex_count, 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_count), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t v = range.begin(); v != range.end(); ++v)
+            embedded[v] = wanted[v] && fan_is_embedded(mesh, uint32_t(v), &around[first[v]], first[v + 1] - first[v]);
+    });
+    return embedded;
+}
+
+// Whether triangles a and b meet other than along what they share; pairs
+// sharing a vertex with an embedded fan, or an edge at one, do not.
+bool cross(const Mesh& mesh, const std::vector<char>& embedded, const Triangle& a, const Triangle& b) {
     const auto& v = mesh.vertices;
     const auto point = [&](uint32_t i) { return Point(v[i][0], v[i][1], v[i][2]); };
     int shared = 0, a_shared[3] = {}, b_shared[3] = {};
+    bool at_embedded_fan = false;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             if (a[i] == b[j]) {
                 ++shared;
                 a_shared[i] = b_shared[j] = 1;
+                at_embedded_fan = at_embedded_fan || embedded[a[i]];
             }
     if (shared >= 3) return true;
+    if (at_embedded_fan) return false;
     if (shared == 2) {
         int i = 0, j = 0;
         while (a_shared[i]) ++i;
@@ -247,16 +356,15 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
             }
     });
     const Grids grids(boxes);
+    const std::vector<char> embedded = embedded_fans(mesh, candidates);
 
     tbb::enumerable_thread_specific<std::vector<std::pair<uint32_t, uint32_t>>> found;
-    // Tests the pair met in `cell` of `level` unless another cell owns it.
-    const auto test = [&](uint32_t i, uint32_t j, int level, uint64_t cell) {
+    // Tests the pair met in `cell` unless another cell owns it; `i_low` and
+    // `j_low`: the cells of that level holding their boxes' lowest corners.
+    const auto test = [&](uint32_t i, uint32_t j, uint64_t cell, uint64_t i_low, uint64_t j_low) {
         if (i == j || (!candidates.empty() && !candidates[i] && !candidates[j])) return;
-        const Box &a = boxes[i], &b = boxes[j];
-        if (!boxes_overlap(a, b)) return;
-        const double corner[3] = {std::max(a.lo[0], b.lo[0]), std::max(a.lo[1], b.lo[1]), std::max(a.lo[2], b.lo[2])};
-        if (grids.cell_of(corner, level) != cell) return;
-        if (!cross(mesh, mesh.triangles[i], mesh.triangles[j])) return;
+        if (!boxes_overlap(boxes[i], boxes[j]) || Grids::common_low_cell(i_low, j_low) != cell) return;
+        if (!cross(mesh, embedded, mesh.triangles[i], mesh.triangles[j])) return;
         found.local().emplace_back(std::min(i, j), std::max(i, j));
     };
 
@@ -270,7 +378,8 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
             for (size_t r = range.begin(); r != range.end(); ++r)
                 for (size_t e = runs[r]; e < runs[r + 1]; ++e)
                     for (size_t f = e + 1; f < runs[r + 1]; ++f)
-                        test(entries[e].triangle, entries[f].triangle, level, entries[e].cell);
+                        test(entries[e].triangle, entries[f].triangle, entries[e].cell,
+                             grids.low_cell(entries[e].triangle), grids.low_cell(entries[f].triangle));
         });
     }
     if (grids.levels() > 1)
@@ -278,10 +387,11 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
             for (size_t t = range.begin(); t != range.end(); ++t)
                 for (int level = grids.level(t) + 1; level < grids.levels(); ++level) {
                     const std::vector<Entry>& entries = grids.entries(level);
+                    const uint64_t t_low = grids.cell_of(boxes[t].lo, level);
                     grids.for_each_cell(boxes[t], level, [&](uint64_t cell) {
                         auto it = std::lower_bound(entries.begin(), entries.end(), Entry{cell, 0});
                         for (; it != entries.end() && it->cell == cell; ++it)
-                            test(uint32_t(t), it->triangle, level, cell);
+                            test(uint32_t(t), it->triangle, cell, t_low, grids.low_cell(it->triangle));
                     });
                 }
         });

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -145,6 +146,24 @@ TEST(CrossingPairs, LargeTrianglesMeetSmallOnes) {
     std::vector<char> only_large(mesh.triangles.size(), 0);
     only_large.back() = 1;
     EXPECT_EQ(fast_pairs(mesh, only_large), fast);
+}
+
+TEST(CrossingPairs, FanWindingTwiceAroundItsVertexCrosses) {
+    // Every triangle around the centre turns the same way seen from above, but
+    // the fan goes round twice (72 degrees a step, 10 steps) at heights that
+    // change sign: triangles half a fan apart cross. Pairs sharing a vertex
+    // whose fan winds once are skipped; this one must still be tested.
+    Mesh fan;
+    fan.vertices.push_back({0.0, 0.0, 0.0});
+    const double pi = std::acos(-1.0);
+    for (int k = 0; k < 10; ++k) {
+        const double angle = 2.0 * pi * k / 5.0, height = 0.3 * std::sin(2.0 * pi * (k + 0.5) / 10.0);
+        fan.vertices.push_back({std::cos(angle), std::sin(angle), height});
+    }
+    for (uint32_t k = 0; k < 10; ++k) fan.triangles.push_back({0, 1 + k, 1 + (k + 1) % 10});
+    const auto reference = reference_pairs(fan);
+    EXPECT_FALSE(reference.empty());
+    EXPECT_EQ(fast_pairs(fan), reference);
 }
 
 }  // namespace
