@@ -9,6 +9,7 @@
 #include "volume/crossing_pairs.h"
 #include "volume/drop_small_shells.h"
 #include "volume/extract_mesh.h"
+#include "volume/mesh_shells.h"
 #include "volume/rebuild_band.h"
 #include "volume/snap_to_mesh.h"
 
@@ -72,15 +73,23 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     RepairResult result;
     result.grid = signed_distance_from_mesh(mesh, options.distance, progress, &result.distance);
     auto& timings = result.distance.timings;
-    const ShellCounts shells = timed(timings, "shells", [&] {
-        return drop_small_shells(result.grid, options.min_shell_volume, progress);
-    });
-    result.shells_kept = shells.kept;
-    result.shells_dropped = shells.dropped;
-    if (shells.kept == 0)
-        throw Error(FABVDB_ERR_BAD_INPUT, options.distance.input_name + ": every shell is smaller than the minimum shell volume");
+    // Without a minimum volume nothing is dropped, and the shells are counted
+    // as the connected pieces of the extracted surface: cheaper than
+    // segmenting the grid, and what the output holds.
+    const bool count_on_surface = options.extract && options.min_shell_volume == 0.0;
+    if (!count_on_surface) {
+        const ShellCounts shells = timed(timings, "shells", [&] {
+            return drop_small_shells(result.grid, options.min_shell_volume, progress);
+        });
+        result.shells_kept = shells.kept;
+        result.shells_dropped = shells.dropped;
+        if (shells.kept == 0)
+            throw Error(FABVDB_ERR_BAD_INPUT, options.distance.input_name + ": every shell is smaller than the minimum shell volume");
+    }
     result.distance.active_voxels = result.grid->activeVoxelCount();
     if (options.extract) extract_clean_surface(mesh, options, result, progress);
+    if (count_on_surface)
+        result.shells_kept = timed(timings, "shells", [&] { return uint64_t(split_shells(result.mesh).size()); });
     return result;
 }
 

@@ -34,7 +34,7 @@ struct RepairResult {
     openvdb::FloatGrid::Ptr grid;
     Mesh mesh;
     SignedDistanceStats distance;  // its timings hold every stage's
-    uint64_t shells_kept = 0;
+    uint64_t shells_kept = 0;  //!< connected pieces of the output surface (of the level set without extraction)
     uint64_t shells_dropped = 0;
     uint64_t snapped_vertices = 0;
 };
