@@ -361,9 +361,10 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
     tbb::enumerable_thread_specific<std::vector<std::pair<uint32_t, uint32_t>>> found;
     // Tests the pair met in `cell` unless another cell owns it; `i_low` and
     // `j_low`: the cells of that level holding their boxes' lowest corners.
-    const auto test = [&](uint32_t i, uint32_t j, uint64_t cell, uint64_t i_low, uint64_t j_low) {
+    const auto test = [&](uint32_t i, uint32_t j, const Box& i_box, const Box& j_box, uint64_t cell, uint64_t i_low,
+                          uint64_t j_low) {
+        if (!boxes_overlap(i_box, j_box) || Grids::common_low_cell(i_low, j_low) != cell) return;
         if (i == j || (!candidates.empty() && !candidates[i] && !candidates[j])) return;
-        if (!boxes_overlap(boxes[i], boxes[j]) || Grids::common_low_cell(i_low, j_low) != cell) return;
         if (!cross(mesh, embedded, mesh.triangles[i], mesh.triangles[j])) return;
         found.local().emplace_back(std::min(i, j), std::max(i, j));
     };
@@ -375,11 +376,23 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
             if (e == 0 || entries[e].cell != entries[e - 1].cell) runs.push_back(e);
         runs.push_back(entries.size());
         tbb::parallel_for(tbb::blocked_range<size_t>(0, runs.size() - 1), [&](const tbb::blocked_range<size_t>& range) {
-            for (size_t r = range.begin(); r != range.end(); ++r)
-                for (size_t e = runs[r]; e < runs[r + 1]; ++e)
-                    for (size_t f = e + 1; f < runs[r + 1]; ++f)
-                        test(entries[e].triangle, entries[f].triangle, entries[e].cell,
-                             grids.low_cell(entries[e].triangle), grids.low_cell(entries[f].triangle));
+            // The run's boxes and lowest cells side by side, read once.
+            std::vector<Box> run_boxes;
+            std::vector<uint64_t> run_lows;
+            for (size_t r = range.begin(); r != range.end(); ++r) {
+                const Entry* run = &entries[runs[r]];
+                const size_t size = runs[r + 1] - runs[r];
+                run_boxes.resize(size);
+                run_lows.resize(size);
+                for (size_t e = 0; e < size; ++e) {
+                    run_boxes[e] = boxes[run[e].triangle];
+                    run_lows[e] = grids.low_cell(run[e].triangle);
+                }
+                for (size_t e = 0; e < size; ++e)
+                    for (size_t f = e + 1; f < size; ++f)
+                        test(run[e].triangle, run[f].triangle, run_boxes[e], run_boxes[f], run[e].cell, run_lows[e],
+                             run_lows[f]);
+            }
         });
     }
     if (grids.levels() > 1)
@@ -391,7 +404,8 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
                     grids.for_each_cell(boxes[t], level, [&](uint64_t cell) {
                         auto it = std::lower_bound(entries.begin(), entries.end(), Entry{cell, 0});
                         for (; it != entries.end() && it->cell == cell; ++it)
-                            test(uint32_t(t), it->triangle, cell, t_low, grids.low_cell(it->triangle));
+                            test(uint32_t(t), it->triangle, boxes[t], boxes[it->triangle], cell, t_low,
+                                 grids.low_cell(it->triangle));
                     });
                 }
         });

@@ -129,6 +129,10 @@ void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& windi
     const double voxel = transform.voxelSize()[0];
     static constexpr int forward[9][3] = {{0, 0, 1}, {0, 1, -1}, {0, 1, 0}, {0, 1, 1}, {1, -1, 0},
                                           {1, 0, -1}, {1, 0, 0}, {1, 0, 1}, {1, 1, 0}};
+    double link_length[9];
+    for (int s = 0; s < 9; ++s)
+        link_length[s] =
+            voxel * std::sqrt(double(forward[s][0] * forward[s][0] + forward[s][1] * forward[s][1] + forward[s][2] * forward[s][2]));
     const auto position = [](int offset) { return openvdb::Coord(offset >> 6, (offset >> 3) & 7, offset & 7); };
     int16_t group[leaf_size];
     const auto root = [&](int i) {
@@ -140,13 +144,12 @@ void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& windi
     for (auto it = active.beginOn(); it; ++it) {
         const int offset = int(it.pos());
         const openvdb::Coord p = position(offset);
-        for (const auto& step : forward) {
-            const openvdb::Coord q = p.offsetBy(step[0], step[1], step[2]);
+        for (int s = 0; s < 9; ++s) {
+            const openvdb::Coord q = p.offsetBy(forward[s][0], forward[s][1], forward[s][2]);
             if (q[0] >= leaf_dim || q[1] < 0 || q[1] >= leaf_dim || q[2] < 0 || q[2] >= leaf_dim) continue;
             const int neighbour = (q[0] << 6) | (q[1] << 3) | q[2];
             if (!active.isOn(neighbour)) continue;
-            const double length = voxel * std::sqrt(double(step[0] * step[0] + step[1] * step[1] + step[2] * step[2]));
-            if (double(leaf.getValue(offset)) + double(leaf.getValue(neighbour)) > length * (1.0 + 1e-3))
+            if (double(leaf.getValue(offset)) + double(leaf.getValue(neighbour)) > link_length[s] * (1.0 + 1e-3))
                 group[root(neighbour)] = int16_t(root(offset));
         }
     }
