@@ -313,7 +313,9 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  * surface and empties the rest. The mesh may be dirty (holes, self-
  * intersections, flipped or duplicated triangles, several shells): it then
  * goes through the robust signed distance first. A clean closed mesh keeps its
- * own outer triangles exactly. The cavity vertices lie at exactly the wall
+ * own outer triangles exactly; so does a closed mesh whose only defect is a
+ * few crossing triangles (overlapping shells, a fold), cut down to the exact
+ * boundary of its shells' union. The cavity vertices lie at exactly the wall
  * distance from the outer surface (closing 0) or at least at it (closing > 0).
  * Regions thinner than 2*wall stay solid.
  * mesh: borrowed. opts: NULL for the defaults.
@@ -321,7 +323,8 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  *   facing out, cavity shells facing in, every shell closed, no cavity
  *   triangle touching the outer surface (checked exactly).
  * out_report: NULL, or receives a report (owned by the caller) with
- *   voxel_size, wall, closing, outer_surface ("input" or "repaired"),
+ *   voxel_size, wall, closing, outer_surface ("input", "resolved" or
+ *   "repaired"),
  *   volume_solid, volume_shell, material_saved_fraction, cavity_count,
  *   cavities [{volume}], filled_cavities [{volume}], min_wall_at_vertices,
  *   output_vertices, output_triangles, timings {stage: seconds, total}.

@@ -48,7 +48,7 @@ nlohmann::json report_of(const HollowResult& result, const HollowOptions& option
     report["closing"] = options.closing;
     report["adaptivity"] = options.adaptivity;
     report["min_cavity_volume"] = options.min_cavity_volume;
-    report["outer_surface"] = result.outer_kept ? "input" : "repaired";
+    report["outer_surface"] = result.outer_surface;
     report["volume_solid"] = result.volume_solid;
     report["volume_shell"] = result.volume_shell;
     report["material_saved_fraction"] =

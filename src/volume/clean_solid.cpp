@@ -1,6 +1,8 @@
 //! The clean-solid test (see clean_solid.h).
 #include "volume/clean_solid.h"
 
+#include <numeric>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
@@ -24,14 +26,32 @@ bool has_degenerate_triangle(const Mesh& mesh) {
     return false;
 }
 
-}  // namespace
+bool is_one_shell(const Mesh& mesh) {
+    std::vector<uint32_t> parent(mesh.vertices.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto root = [&](uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    for (const Triangle& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = root(t[k]), b = root(t[(k + 1) % 3]);
+            if (a != b) parent[a] = b;
+        }
+    const uint32_t shell = root(mesh.triangles.front()[0]);
+    for (const Triangle& t : mesh.triangles)
+        if (root(t[0]) != shell) return false;
+    return true;
+}
 
-bool is_clean_solid(const Mesh& mesh, Progress& progress) {
-    progress.stage("check input surface");
-    if (mesh.triangles.empty() || !is_closed_manifold(mesh) || has_degenerate_triangle(mesh)) return false;
-    progress.update(0.2);
-    if (!crossing_pairs(mesh).empty()) return false;
-    progress.update(0.8);
+//! Whether a closed oriented manifold whose triangles do not cross bounds a
+//! volume. One such shell always bounds a region, outward exactly when its
+//! volume is positive; several must also nest consistently (CGAL), and CGAL
+//! also accepts a mesh turned wholly inside out (it bounds the unbounded
+//! complement), whose volume is negative.
+bool bounds_volume(const Mesh& mesh) {
+    if (signed_volume(mesh) <= 0.0) return false;
+    if (is_one_shell(mesh)) return true;
     // Only the vertices triangles use: CGAL's volume test fails on isolated ones.
     SurfaceMesh surface;
     std::vector<SurfaceMesh::Vertex_index> vertex(mesh.vertices.size(), SurfaceMesh::null_vertex());
@@ -40,12 +60,22 @@ bool is_clean_solid(const Mesh& mesh, Progress& progress) {
             if (vertex[v] == SurfaceMesh::null_vertex()) vertex[v] = surface.add_vertex(point(mesh.vertices[v]));
     for (const Triangle& t : mesh.triangles)
         if (surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) == SurfaceMesh::null_face()) return false;
-    // CGAL also accepts a mesh turned wholly inside out (it bounds the
-    // unbounded complement); its volume is negative.
-    const bool bounds_volume =
-        CGAL::Polygon_mesh_processing::does_bound_a_volume(surface) && signed_volume(mesh) > 0.0;
+    return CGAL::Polygon_mesh_processing::does_bound_a_volume(surface);
+}
+
+}  // namespace
+
+SolidCheck check_solid(const Mesh& mesh, Progress& progress, const std::vector<char>& candidates) {
+    progress.stage("check input surface");
+    SolidCheck result;
+    if (mesh.triangles.empty() || !is_closed_manifold(mesh) || has_degenerate_triangle(mesh)) return result;
+    progress.update(0.2);
+    result.crossings = crossing_pairs(mesh, candidates);
+    if (!result.crossings.empty()) return result;
+    progress.update(0.8);
+    result.clean = bounds_volume(mesh);
     progress.update(1.0);
-    return bounds_volume;
+    return result;
 }
 
 }  // namespace fabvdb::volume

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include <openvdb/tools/FastSweeping.h>
@@ -17,6 +18,7 @@
 #include "volume/memory_estimate.h"
 #include "volume/mesh_shells.h"
 #include "volume/repair.h"
+#include "volume/resolve_crossings.h"
 #include "volume/signed_distance.h"
 #include "volume/snap_to_offset.h"
 #include "volume/solid_distance.h"
@@ -140,21 +142,31 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
                              : automatic_hollow_voxel(options.wall);
     result.voxel_size = voxel;
 
-    // The outer surface: the input itself when it is clean, else the surface
-    // of its robust signed distance.
+    // The outer surface: the input itself when it is clean, its shells' union
+    // when only crossings spoil it, else the surface of its robust signed
+    // distance.
     check_budget(input, options, voxel);
     Mesh outer;
-    if (is_clean_solid(input, progress)) {
+    const SolidCheck check = check_solid(input, progress);
+    clock.lap("check input");
+    std::optional<Mesh> resolved;
+    if (!check.crossings.empty()) {
+        resolved = resolve_crossings(input, check.crossings, progress);
+        clock.lap("resolve crossings");
+    }
+    if (check.clean) {
         outer = input;
-        result.outer_kept = true;
-        clock.lap("check input");
+        result.outer_surface = "input";
+    } else if (resolved) {
+        outer = std::move(*resolved);
+        result.outer_surface = "resolved";
     } else {
-        clock.lap("check input");
         RepairOptions repair_options;
         repair_options.distance.voxel_size = voxel;
         repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
         repair_options.distance.input_name = options.input_name;
         outer = without_specks(repair(input, repair_options, progress).mesh, voxel * voxel * voxel);
+        result.outer_surface = "repaired";
         clock.lap("repair");
     }
     result.volume_solid = signed_volume(outer);

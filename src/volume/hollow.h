@@ -1,7 +1,9 @@
 //! Hollowing for printing: keeps a wall of thickness `wall` under the outer
 //! surface and empties the rest. The input may be dirty (it then goes through
 //! the repair pipeline, repair.h, whose surface is clean); a clean closed
-//! input keeps its own outer triangles. The cavity is the interior offset by
+//! input keeps its own outer triangles, and one whose only defect is a few
+//! crossing triangles keeps the exact boundary of its shells' union, cut out
+//! of its own triangles (resolve_crossings.h). The cavity is the interior offset by
 //! −wall, opened by the closing distance like PrusaSlicer's, and at least by
 //! one voxel (offset by −(wall + opening), the core's distance rebuilt by fast
 //! sweeping, then by +opening): void slivers thinner than two voxels, whose
@@ -44,7 +46,10 @@ struct HollowOptions {
 
 struct HollowResult {
     Mesh mesh;                   //!< outer shells, then the cavity shells
-    bool outer_kept = false;     //!< the input's own triangles are the outer surface
+    //! Where the outer surface comes from: "input" (the input's own triangles),
+    //! "resolved" (the input's triangles with their crossings cut out) or
+    //! "repaired" (the repair pipeline's surface).
+    std::string outer_surface;
     double voxel_size = 0.0;
     double volume_solid = 0.0;   //!< mm³ enclosed by the outer surface
     double volume_shell = 0.0;   //!< mm³ of material left
