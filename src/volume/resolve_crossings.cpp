@@ -115,9 +115,19 @@ std::optional<Refined> refine(const Mesh& mesh, const std::vector<std::pair<uint
     return refined;
 }
 
-//! Per triangle, its patch: triangles joined across every edge but the cuts.
-//! Empty when some edge has no single opposite (not a manifold by indices).
-std::vector<uint32_t> patches(const Refined& refined, size_t& patch_count) {
+//! The surface's patches: triangles joined across every edge but the cuts.
+struct Patches {
+    std::vector<uint32_t> of_triangle;
+    size_t count = 0;
+    //! For every cut edge, the patches of the triangles on its two sides
+    //! (one sheet): the winding number in front of them differs by one.
+    std::vector<std::pair<uint32_t, uint32_t>> across_cuts;
+};
+
+//! Nothing when some edge has no single opposite (not a manifold by its
+//! indices) or a cut does not part its two sides (a cut that ends inside a
+//! patch, as at a branch point, where no winding number holds for a patch).
+std::optional<Patches> patches(const Refined& refined) {
     const auto& triangles = refined.mesh.triangles;
     std::vector<std::pair<uint64_t, uint32_t>> directed(3 * triangles.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size()), [&](const tbb::blocked_range<size_t>& range) {
@@ -132,23 +142,33 @@ std::vector<uint32_t> patches(const Refined& refined, size_t& patch_count) {
         while (parent[t] != t) t = parent[t] = parent[parent[t]];
         return t;
     };
+    std::vector<std::pair<uint32_t, uint32_t>> cut_sides;  // triangles
     for (size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) {
             const uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
             const auto opposite = std::lower_bound(directed.begin(), directed.end(), std::make_pair(edge_key(b, a), 0u));
             if (opposite == directed.end() || opposite->first != edge_key(b, a) ||
                 (opposite + 1 != directed.end() && (opposite + 1)->first == edge_key(b, a)))
-                return {};
-            if (!refined.cut_edges.count(edge_key(a, b))) parent[root(uint32_t(t))] = root(opposite->second);
+                return std::nullopt;
+            if (!refined.cut_edges.count(edge_key(a, b)))
+                parent[root(uint32_t(t))] = root(opposite->second);
+            else if (a < b)
+                cut_sides.emplace_back(uint32_t(t), opposite->second);
         }
-    std::vector<uint32_t> patch(triangles.size()), number(triangles.size(), UINT32_MAX);
-    patch_count = 0;
+    Patches result;
+    result.of_triangle.resize(triangles.size());
+    std::vector<uint32_t> number(triangles.size(), UINT32_MAX);
     for (size_t t = 0; t < triangles.size(); ++t) {
         uint32_t& n = number[root(uint32_t(t))];
-        if (n == UINT32_MAX) n = uint32_t(patch_count++);
-        patch[t] = n;
+        if (n == UINT32_MAX) n = uint32_t(result.count++);
+        result.of_triangle[t] = n;
     }
-    return patch;
+    for (const auto& [t, u] : cut_sides) {
+        const uint32_t p = result.of_triangle[t], q = result.of_triangle[u];
+        if (p == q) return std::nullopt;
+        result.across_cuts.emplace_back(p, q);
+    }
+    return result;
 }
 
 using Vec = std::array<double, 3>;
@@ -396,12 +416,15 @@ std::optional<Mesh> resolve_crossings(const Mesh& mesh, const std::vector<std::p
     const std::optional<Refined> refined = refine(mesh, crossings);
     if (!refined) return std::nullopt;
     progress.update(0.2);
-    size_t patch_count = 0;
-    const std::vector<uint32_t> patch = patches(*refined, patch_count);
-    if (patch.empty()) return std::nullopt;
+    const std::optional<Patches> parts = patches(*refined);
+    if (!parts) return std::nullopt;
+    const std::vector<uint32_t>& patch = parts->of_triangle;
     progress.update(0.3);
-    const std::optional<std::vector<int>> front = front_winding_numbers(refined->mesh, patch, patch_count, progress);
+    const std::optional<std::vector<int>> front = front_winding_numbers(refined->mesh, patch, parts->count, progress);
     if (!front) return std::nullopt;
+    // One ray per patch: the cuts between them must tell the same story.
+    for (const auto& [p, q] : parts->across_cuts)
+        if (std::abs((*front)[p] - (*front)[q]) != 1) return std::nullopt;
     progress.update(0.8);
 
     // The kept pieces' cut points, merged with their copies on the other side
