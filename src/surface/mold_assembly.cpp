@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "surface/face_sweep.h"
+#include "surface/float_rounding.h"
 #include "surface/height_field_solid.h"
 #include "surface/mesh_boolean.h"
 #include "surface/parting_surface.h"
@@ -130,14 +131,22 @@ MoldPair assemble_in_frame(const Mesh& local, const std::vector<std::vector<Vec3
     const Mesh slab = box_mesh({block_lo[0] - margin, block_lo[1] - margin, block_lo[2]},
                                {block_hi[0] + margin, block_hi[1] + margin, block_hi[2]});
 
-    // Channels straddle the parting surface; where they reach over the part
-    // they take its whole column, so both pieces stay height fields.
+    // Channels straddle the parting surface, their half width measured
+    // across it (along Z it grows with the slope: on a steep parting
+    // surface a fixed height would pinch the channel to a slit); where they
+    // reach over the part they take its whole column, so both pieces stay
+    // height fields.
     std::vector<double> channel_lo(vertex_count), channel_hi(vertex_count);
     for (int j = 0; j <= grid.ny; ++j)
         for (int i = 0; i <= grid.nx; ++i) {
             const size_t v = size_t(j) * size_t(grid.nx + 1) + size_t(i);
-            channel_lo[v] = grid.z[v] - sizes.runner_half_width;
-            channel_hi[v] = grid.z[v] + sizes.runner_half_width;
+            const int i0 = std::max(i - 1, 0), i1 = std::min(i + 1, grid.nx);
+            const int j0 = std::max(j - 1, 0), j1 = std::min(j + 1, grid.ny);
+            const double slope_x = (grid.at(i1, j) - grid.at(i0, j)) / ((i1 - i0) * step);
+            const double slope_y = (grid.at(i, j1) - grid.at(i, j0)) / ((j1 - j0) * step);
+            const double half_height = sizes.runner_half_width * std::sqrt(1 + slope_x * slope_x + slope_y * slope_y);
+            channel_lo[v] = grid.z[v] - half_height;
+            channel_hi[v] = grid.z[v] + half_height;
             double z_lo = 0, z_hi = 0;
             if (grid.x(i) >= box.min[0] && grid.x(i) <= box.max[0] && grid.y(j) >= box.min[1] &&
                 grid.y(j) <= box.max[1] && column_extent(local, grid.x(i), grid.y(j), z_lo, z_hi)) {
@@ -180,6 +189,13 @@ MoldPair assemble_in_frame(const Mesh& local, const std::vector<std::vector<Vec3
     return pair;
 }
 
+// The pieces as an STL file stores them: float coordinates, rounded without
+// folding the slivers the exact booleans leave where solids graze.
+void round_pieces_to_float(MoldPair& pair) {
+    pair.top = round_to_float(pair.top, "the top mold piece");
+    pair.bottom = round_to_float(pair.bottom, "the bottom mold piece");
+}
+
 }  // namespace
 
 MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOptions& options, Progress& progress) {
@@ -189,6 +205,7 @@ MoldPair assemble_mold(const Mesh& part, const Vec3& direction, const MoldOption
     pair.top = volume::rotate_mesh(pair.top, frame, true);
     pair.bottom = volume::rotate_mesh(pair.bottom, frame, true);
     pair.channels = volume::rotate_mesh(pair.channels, frame, true);
+    round_pieces_to_float(pair);
     pair.block_center = frame.to_world(pair.block_center);
     for (Vec3& gate : pair.gates) gate = frame.to_world(gate);
     for (Vec3& vent : pair.vents) vent = frame.to_world(vent);
@@ -217,7 +234,9 @@ MoldPair assemble_common_mold(const std::vector<Mesh>& parts, const std::vector<
         row.vertices.insert(row.vertices.end(), local.vertices.begin(), local.vertices.end());
         for (const Triangle& t : local.triangles) row.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
     }
-    return assemble_in_frame(row, parting_lines, options, progress);
+    MoldPair pair = assemble_in_frame(row, parting_lines, options, progress);
+    round_pieces_to_float(pair);
+    return pair;
 }
 
 }  // namespace fabvdb::surface

@@ -12,8 +12,10 @@
 //! (B∓ and SV reach past it, so no two solids share a plane). CGAL exact
 //! booleans. The part
 //! must be a double height field along d (sweep.h makes it one). The pieces
-//! come back in world coordinates, closed and 2-manifold; the bottom is
-//! removed along −d, the top along +d. Checks cancellation between stages.
+//! come back in world coordinates, closed and 2-manifold, with float
+//! coordinates that cross nowhere (float_rounding.h: what an STL file stores
+//! is what was checked); the bottom is removed along −d, the top along +d.
+//! Checks cancellation between stages.
 #pragma once
 
 #include <array>

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "surface/float_rounding.h"
 #include "surface/overhang_deformation.h"
 #include "surface/surface_distance.h"
 #include "volume/detail_restoration.h"
@@ -148,8 +149,6 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         cast.deformation_handles = deformation.handles;
         cast.deformation_max = deformation.max_displacement;
         cast.deformation_mean = deformation.mean_displacement;
-        cast.volume = signed_volume(cast.part);
-        cast.added_volume = cast.volume - cast.restored_volume - cast.deformed_volume_change;
         cast.removed_by_keep_out = stats.removed_by_keep_out;
         clock.lap("part surface");
         if (!options.common_mold) {
@@ -170,6 +169,14 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         result.common_mold = assemble_common_mold(parts, directions, options.mold, progress, offsets);
         for (size_t p = 0; p < offsets.size(); ++p) result.parts[p].common_mold_offset = offsets[p];
         clock.lap("mold assembly");
+    }
+    // The parts as their STL files store them; the molds were made around
+    // the exact parts (rounding first could turn a triangle at the
+    // silhouette over and move the parting line).
+    for (CastPart& cast : result.parts) {
+        cast.part = round_to_float(cast.part, "part " + std::to_string(cast.id));
+        cast.volume = signed_volume(cast.part);
+        cast.added_volume = cast.volume - cast.restored_volume - cast.deformed_volume_change;
     }
     measure_distances(input, result, progress);
     clock.lap("distance to the input");

@@ -10,7 +10,9 @@
 //!     volume/double_height_field_mesh.h);
 //!  3. its two-piece mold: RBF parting surface, gate, runner, sprue, vents,
 //!     registration keys, CGAL booleans (mold_assembly.h); or, with
-//!     `common_mold`, one mold for all the parts side by side.
+//!     `common_mold`, one mold for all the parts side by side;
+//!  4. the parts rounded to float coordinates, as STL files store them,
+//!     without crossing triangles (float_rounding.h; the mold pieces are too).
 //! Measures what each part added and how closely the parts reproduce the
 //! input (distance from the input's vertices to the nearest part surface).
 //! Cancellable between and inside stages; a cancelled run returns nothing.

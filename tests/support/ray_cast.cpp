@@ -172,6 +172,27 @@ bool self_intersects(const Mesh& mesh) {
     return CGAL::Polygon_mesh_processing::does_self_intersect(surface);
 }
 
+Mesh stored_as_float(Mesh mesh) {
+    // Through a volatile float: GCC 12.2 at -O2 and above vectorises the
+    // round trip of x and y into a pair conversion that it drops as a no-op.
+    for (Vec3& p : mesh.vertices)
+        for (double& c : p) {
+            volatile float rounded = float(c);
+            c = rounded;
+        }
+    return mesh;
+}
+
+size_t degenerate_triangle_count(const Mesh& mesh) {
+    size_t count = 0;
+    for (const auto& t : mesh.triangles) {
+        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        count += u[1] * v[2] - u[2] * v[1] == 0.0 && u[2] * v[0] - u[0] * v[2] == 0.0 && u[0] * v[1] - u[1] * v[0] == 0.0;
+    }
+    return count;
+}
+
 double sampled_common_volume(const std::vector<const Mesh*>& solids, const Vec3& box_lo, const Vec3& box_hi,
                              int samples_per_side) {
     std::vector<LineCaster> casters;

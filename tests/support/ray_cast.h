@@ -49,6 +49,12 @@ bool closed_two_manifold(const Mesh& mesh);
 //! CGAL's exact self-intersection test (Polygon_mesh_processing).
 bool self_intersects(const Mesh& mesh);
 
+//! The mesh as a binary STL file stores it: every coordinate rounded to float.
+Mesh stored_as_float(Mesh mesh);
+
+//! Triangles whose corners coincide or line up (cross product exactly zero).
+size_t degenerate_triangle_count(const Mesh& mesh);
+
 //! Volume of the set inside every mesh of `solids`, by ray parity on a
 //! regular grid of `samples_per_side`³ points over `box_lo`..`box_hi`.
 double sampled_common_volume(const std::vector<const Mesh*>& solids, const Vec3& box_lo, const Vec3& box_hi,
