@@ -26,41 +26,58 @@ using openvdb::Vec3d;
 using FloatLeaf = openvdb::FloatTree::LeafNodeType;
 using IndexLeaf = openvdb::Int32Tree::LeafNodeType;
 
-uint64_t directed_edge(uint32_t from, uint32_t to) { return (uint64_t(from) << 32) | to; }
-
 //! Unit face normals, angle-weighted vertex pseudonormals, and for every
-//! triangle edge k (corner k to corner k+1) the triangle across it.
+//! triangle edge k (corner k to corner k+1) the triangle across it (the
+//! first, by index, that runs along it the other way; itself if none).
 struct Pseudonormals {
     std::vector<Vec3d> face, vertex;
     std::vector<uint32_t> across;
 
     Pseudonormals(const Mesh& mesh, const std::vector<Vec3d>& points)
         : face(mesh.triangles.size()), vertex(points.size(), Vec3d(0.0)), across(3 * mesh.triangles.size()) {
-        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-            const Triangle& tri = mesh.triangles[t];
-            Vec3d n = (points[tri[1]] - points[tri[0]]).cross(points[tri[2]] - points[tri[0]]);
-            const double length = n.length();
-            face[t] = length > 0.0 ? n / length : Vec3d(0.0);
-            for (int k = 0; k < 3; ++k) {
-                const Vec3d u = points[tri[(k + 1) % 3]] - points[tri[k]];
-                const Vec3d v = points[tri[(k + 2) % 3]] - points[tri[k]];
-                const double angle = std::atan2(u.cross(v).length(), u.dot(v));
-                vertex[tri[k]] += face[t] * angle;
+        const size_t triangle_count = mesh.triangles.size();
+        std::vector<Vec3d> corner_normal(3 * triangle_count);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, triangle_count), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t t = range.begin(); t != range.end(); ++t) {
+                const Triangle& tri = mesh.triangles[t];
+                Vec3d n = (points[tri[1]] - points[tri[0]]).cross(points[tri[2]] - points[tri[0]]);
+                const double length = n.length();
+                face[t] = length > 0.0 ? n / length : Vec3d(0.0);
+                for (int k = 0; k < 3; ++k) {
+                    const Vec3d u = points[tri[(k + 1) % 3]] - points[tri[k]];
+                    const Vec3d v = points[tri[(k + 2) % 3]] - points[tri[k]];
+                    corner_normal[3 * t + k] = face[t] * std::atan2(u.cross(v).length(), u.dot(v));
+                }
             }
-        }
-        std::vector<std::pair<uint64_t, uint32_t>> edges;
-        edges.reserve(3 * mesh.triangles.size());
-        for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k)
-                edges.emplace_back(directed_edge(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), t);
-        tbb::parallel_sort(edges.begin(), edges.end());
-        for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k) {
-                const auto reverse = std::lower_bound(
-                    edges.begin(), edges.end(),
-                    std::make_pair(directed_edge(mesh.triangles[t][(k + 1) % 3], mesh.triangles[t][k]), uint32_t(0)));
-                across[3 * t + k] = reverse != edges.end() ? reverse->second : t;
-            }
+        });
+        // Per vertex, its corners (3 t + k) in triangle order, so that the
+        // sums below add in that order.
+        std::vector<uint32_t> first(points.size() + 1, 0);
+        for (const Triangle& tri : mesh.triangles)
+            for (uint32_t v : tri) ++first[v + 1];
+        for (size_t v = 0; v < points.size(); ++v) first[v + 1] += first[v];
+        std::vector<uint32_t> corners(first.back());
+        std::vector<uint32_t> filled(first.begin(), first.end() - 1);
+        for (size_t t = 0; t < triangle_count; ++t)
+            for (int k = 0; k < 3; ++k) corners[filled[mesh.triangles[t][k]]++] = uint32_t(3 * t + k);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t v = range.begin(); v != range.end(); ++v)
+                for (uint32_t c = first[v]; c != first[v + 1]; ++c) vertex[v] += corner_normal[corners[c]];
+        });
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, triangle_count), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t t = range.begin(); t != range.end(); ++t)
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t from = mesh.triangles[t][k], to = mesh.triangles[t][(k + 1) % 3];
+                    across[3 * t + k] = uint32_t(t);
+                    for (uint32_t c = first[to]; c != first[to + 1]; ++c) {
+                        const uint32_t other = corners[c] / 3, at = corners[c] % 3;
+                        if (mesh.triangles[other][(at + 1) % 3] == from) {
+                            across[3 * t + k] = other;
+                            break;
+                        }
+                    }
+                }
+        });
     }
 
     Vec3d at(const Mesh& mesh, uint32_t t, TriangleFeature feature) const {
