@@ -1,10 +1,11 @@
 // bench_repair_coverage: how far the input lies from the repaired output,
 // measured apart from the repair (CGAL AABB tree over the output's
-// triangles). Samples: every input vertex, every edge midpoint and 16 random
-// points per triangle. Prints, per resolution (voxels along the longest side,
-// as `fabvdb repair --resolution N` with its other options at their
-// defaults), the largest and mean distance in voxels, how many samples lie
-// beyond one voxel, and the farthest sample.
+// triangles). Samples: every input vertex that a triangle uses (files may
+// hold stray points), every edge midpoint and 16 random points per triangle.
+// Prints, per resolution (voxels along the longest side, as `fabvdb repair
+// --resolution N` with its other options at their defaults), the largest
+// and mean distance in voxels, how many samples lie beyond one voxel, and
+// the farthest sample.
 // Usage: bench_repair_coverage MODEL [RESOLUTION ...] (default 96 400);
 // MODEL is a file name in the shared meshes folder.
 #include <algorithm>
@@ -37,7 +38,11 @@ Point point(const fabvdb::Vec3& v) { return Point(v[0], v[1], v[2]); }
 
 std::vector<Point> samples(const fabvdb::Mesh& mesh) {
     std::vector<Point> points;
-    for (const auto& v : mesh.vertices) points.push_back(point(v));
+    std::vector<char> used(mesh.vertices.size(), 0);
+    for (const auto& t : mesh.triangles)
+        for (uint32_t v : t) used[v] = 1;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v)
+        if (used[v]) points.push_back(point(mesh.vertices[v]));
     std::mt19937 random(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto& t : mesh.triangles) {
