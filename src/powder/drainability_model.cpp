@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/SparseCore>
 #include <tbb/blocked_range.h>
@@ -16,22 +17,12 @@ namespace {
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-std::vector<std::vector<uint32_t>> region_members(const OrientationFlow& flow) {
-    std::vector<std::vector<uint32_t>> members;
-    for (uint32_t j = 0; j < flow.region.size(); ++j) {
-        if (flow.region[j] < 0) continue;
-        if (size_t(flow.region[j]) >= members.size()) members.resize(size_t(flow.region[j]) + 1);
-        members[size_t(flow.region[j])].push_back(j);
-    }
-    return members;
-}
-
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-//! When ranking candidates (exact evaluations use everything): wet patches
-//! probed per basin, and first-turn powder samples per basin.
-constexpr size_t kGainProbes = 12;
-constexpr size_t kGainSamples = 4096;
+//! Later-turn samples aimed at by the automatic stride, and the pile shares
+//! the expected residual is solved on.
+constexpr double kLaterSamples = 2500.0;
+constexpr int kPileLevels = 48;
 //! Chain moves lighter than this share of a patch's powder are dropped (kept in place).
 constexpr double kChainPrune = 2e-3;
 
@@ -95,7 +86,6 @@ Eigen::VectorXd solve(const SparseMatrix& base, const SparseMatrix& captured, do
 
 struct DrainabilityModel::TurnChain {
     SparseMatrix base;  //!< I − ρ Σ_g w_g S(g): the chain without holes
-    SparseMatrix base_transposed;
 };
 
 namespace {
@@ -135,30 +125,38 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     if (turns.empty()) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the orientation set is empty");
     tan_repose_ = std::tan(options.repose_radians);
     sin_repose_ = std::sin(options.repose_radians);
-    for (const OrientationFlow& flow : turns) {
-        turn_region_members_.push_back(region_members(flow));
-        std::vector<Basin> basins(turn_region_members_.back().size());
-        std::vector<std::vector<std::pair<double, uint32_t>>> sorted(basins.size());
-        for (uint32_t j = 0; j < patches.size(); ++j) {
-            const int32_t region = flow.region[flow.main_destination[j]];
-            const double up = -dot(patches.normal[j], flow.gravity);
-            if (region >= 0 && up > 0.0) sorted[size_t(region)].push_back({-dot(patches.site[j], flow.gravity), j});
+    later_turns_ = int(std::lround(options.effort / (1.0 - options.effort)));
+
+    const int stride = std::max(1, int(std::lround(std::cbrt(double(powder.position.size()) / kLaterSamples))));
+    first_grid_ = sample_grid(powder, 1);
+    later_grid_ = sample_grid(powder, stride);
+    auto cavities = [&](const SampleGrid& grid, std::vector<uint32_t>& cavity, std::vector<uint32_t>& count) {
+        cavity.resize(grid.size());
+        count.assign(patches.cavity_count, 0);
+        for (size_t a = 0; a < grid.size(); ++a) {
+            cavity[a] = patches.cavity[powder.rest_patch[grid.sample[a]]];
+            ++count[cavity[a]];
         }
-        for (size_t r = 0; r < basins.size(); ++r) {
-            std::sort(sorted[r].begin(), sorted[r].end());
-            for (const auto& [height, j] : sorted[r]) {
-                basins[r].patch.push_back(j);
-                basins[r].height.push_back(height);
-                basins[r].horizontal_area.push_back(patches.area[j] * -dot(patches.normal[j], flow.gravity));
-            }
-        }
-        turn_basins_.push_back(std::move(basins));
-    }
-    first_region_samples_.resize(region_members(first).size());
-    for (uint32_t s = 0; s < powder.position.size(); ++s) {
-        const int32_t region = first.region[powder.rest_patch[s]];
-        if (region >= 0) first_region_samples_[size_t(region)].push_back(s);
-    }
+    };
+    cavities(first_grid_, first_cavity_, first_count_);
+    cavities(later_grid_, later_cavity_, later_count_);
+    auto heights = [&](const SampleGrid& grid, const Vec3& gravity) {
+        std::vector<float> height(grid.size());
+        for (size_t a = 0; a < grid.size(); ++a) height[a] = float(-dot(powder.position[grid.sample[a]], gravity));
+        return height;
+    };
+    first_forest_ = sublevel_forest(first_grid_.neighbours, heights(first_grid_, first.gravity));
+    later_forests_.resize(turns.size());
+    later_cavity_rank_.resize(turns.size());
+    tbb::parallel_for(size_t(0), turns.size(), [&](size_t k) {
+        later_forests_[k] = sublevel_forest(later_grid_.neighbours, heights(later_grid_, turns[k].gravity));
+        std::vector<uint32_t> next(patches.cavity_count, 0);
+        later_cavity_rank_[k].resize(later_grid_.size());
+        for (uint32_t a : later_forests_[k].order) later_cavity_rank_[k][a] = next[later_cavity_[a]]++;
+    });
+    patch_sample_.resize(patches.size());
+    tbb::parallel_for(size_t(0), patches.size(), [&](size_t j) { patch_sample_[j] = later_grid_.nearest(patches.site[j]); });
+
     const size_t n = patches.size();
     const double weight = 1.0 / double(turns.size());
     std::vector<Eigen::Triplet<double>> entries;
@@ -169,7 +167,7 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     SparseMatrix averaged(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
     averaged.setFromTriplets(entries.begin(), entries.end());
     // Moves of less than kChainPrune of a patch's powder stay put instead:
-    // the chain keeps a fraction of its entries, and the solves speed up as much.
+    // the chain keeps a fraction of its entries, and the solve speeds up as much.
     entries.clear();
     for (Eigen::Index i = 0; i < averaged.outerSize(); ++i) {
         double stays = 1.0;
@@ -180,12 +178,13 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
             }
         entries.emplace_back(int(i), int(i), 1.0 - options.effort * std::max(0.0, stays));
     }
-    auto chain = std::make_shared<TurnChain>();
+    auto chain = std::make_unique<TurnChain>();
     chain->base.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
     chain->base.setFromTriplets(entries.begin(), entries.end());
-    chain->base_transposed = chain->base.transpose();
     chain_ = std::move(chain);
 }
+
+DrainabilityModel::~DrainabilityModel() = default;
 
 bool spaced_from(const DrainHole& candidate, const std::vector<DrainHole>& holes, double min_center_distance) {
     for (const DrainHole& hole : holes) {
@@ -196,216 +195,256 @@ bool spaced_from(const DrainHole& candidate, const std::vector<DrainHole>& holes
     return true;
 }
 
-bool DrainabilityModel::absorbing(const DrainHole& hole, const Vec3& gravity) const {
+namespace {
+
+//! Height of `point` along −gravity above `from`, and its horizontal distance from it.
+std::pair<double, double> rise_and_across(const Vec3& point, const Vec3& from, const Vec3& gravity) {
+    const Vec3 v{point[0] - from[0], point[1] - from[1], point[2] - from[2]};
+    const double rise = -dot(v, gravity);
+    return {rise, std::sqrt(std::max(0.0, dot(v, v) - rise * rise))};
+}
+
+//! Unit direction down the plane of the hole's mouth (gravity less its part
+//! along the axis); zero when the axis is vertical.
+Vec3 down_the_mouth(const DrainHole& hole, const Vec3& gravity) {
+    const double along = dot(hole.axis, gravity);
+    const Vec3 down{gravity[0] - along * hole.axis[0], gravity[1] - along * hole.axis[1],
+                    gravity[2] - along * hole.axis[2]};
+    const double length = std::sqrt(dot(down, down));
+    if (!(length > 1e-12)) return {0, 0, 0};
+    return {down[0] / length, down[1] / length, down[2] / length};
+}
+
+}  // namespace
+
+bool DrainabilityModel::steep(const DrainHole& hole, const Vec3& gravity) const {
     return dot(hole.axis, gravity) > sin_repose_;
 }
 
-double DrainabilityModel::cone_height(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const {
-    // The crater's cone of repose rises from the rim of the mouth, not its centre.
-    const Vec3 v{point[0] - hole.center[0], point[1] - hole.center[1], point[2] - hole.center[2]};
-    const double height = -dot(v, gravity);
-    const double across = std::sqrt(std::max(0.0, dot(v, v) - height * height));
-    const double mouth = 0.5 * hole.diameter;
-    const double hole_height = -dot(hole.center, gravity);
-    return across <= mouth ? hole_height - mouth : hole_height + tan_repose_ * (across - mouth);
+Vec3 DrainabilityModel::outer_lip(const DrainHole& hole, const Vec3& gravity) const {
+    const Vec3 down = down_the_mouth(hole, gravity);
+    const double radius = 0.5 * hole.diameter;
+    Vec3 lip;
+    for (int k = 0; k < 3; ++k) lip[k] = hole.center[k] + radius * down[k] + hole.through * hole.axis[k];
+    return lip;
 }
 
-bool DrainabilityModel::above_cone(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const {
-    return -dot(point, gravity) >= cone_height(hole, point, gravity);
+bool DrainabilityModel::absorbing(const DrainHole& hole, const Vec3& gravity) const {
+    if (steep(hole, gravity)) return true;
+    // The slope of repose from the outer lip must meet the inner mouth below its top.
+    const Vec3 down = down_the_mouth(hole, gravity);
+    const double radius = 0.5 * hole.diameter;
+    const Vec3 top{hole.center[0] - radius * down[0], hole.center[1] - radius * down[1],
+                   hole.center[2] - radius * down[2]};
+    const auto [rise, across] = rise_and_across(top, outer_lip(hole, gravity), gravity);
+    return rise > tan_repose_ * across;
 }
 
-int32_t DrainabilityModel::drained_basin(const DrainHole& hole, const OrientationFlow& flow) const {
-    if (!absorbing(hole, flow.gravity)) return -1;
-    return flow.region[flow.main_destination[hole.patch]];
-}
-
-template <class Visit>
-void DrainabilityModel::for_each_first_turn_sample(const DrainHole& hole, Visit visit) const {
-    const int32_t region = drained_basin(hole, first_);
-    if (region < 0) return;
-    for (uint32_t s : first_region_samples_[size_t(region)])
-        if (above_cone(hole, powder_.position[s], first_.gravity)) visit(s);
-}
-
-std::vector<std::vector<double>> DrainabilityModel::pool_volumes(const std::vector<double>& retained_mass) const {
-    std::vector<std::vector<double>> pools(turns_.size());
-    tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
-        const OrientationFlow& flow = turns_[k];
-        pools[k].assign(turn_basins_[k].size(), 0.0);
-        for (size_t i = 0; i < retained_mass.size(); ++i) {
-            if (retained_mass[i] <= 0.0) continue;
-            for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e) {
-                const int32_t region = flow.region[flow.settle.column[e]];
-                if (region >= 0) pools[k][size_t(region)] += retained_mass[i] * flow.settle.weight[e];
-            }
-        }
-    });
-    return pools;
-}
-
-double DrainabilityModel::pool_drain_fraction(size_t turn, size_t basin_index, double volume,
-                                              const std::vector<const DrainHole*>& holes, size_t max_probes) const {
-    const Basin& basin = turn_basins_[turn][basin_index];
-    const size_t count = basin.patch.size();
-    if (count == 0 || holes.empty()) return 0.0;
-    // A pool too small to measure is a film on the lowest patch.
-    volume = std::max(volume, 1e-3 * powder_.sample_volume);
-    // The level: the pool fills the height field from its lowest patch up.
-    double level = basin.height[0], below_area = 0.0, held = 0.0;
-    size_t wet = 0;
-    while (true) {
-        below_area += basin.horizontal_area[wet];
-        ++wet;
-        const double next = wet < count ? basin.height[wet] : HUGE_VAL;
-        const double room = below_area > 0.0 ? below_area * (next - level) : 0.0;
-        if (held + room >= volume || wet == count) {
-            level += below_area > 0.0 ? (volume - held) / below_area : 0.0;
-            break;
-        }
-        held += room;
-        level = next;
-    }
-    // What the cones keep: per wet patch, the pool up to the lowest cone
-    // (every `stride`-th wet patch, standing for its neighbours in height).
-    const Vec3& gravity = turns_[turn].gravity;
-    const size_t stride = max_probes > 0 ? (wet + max_probes - 1) / max_probes : 1;
-    double kept = 0.0, probed_depth = 0.0;
-    for (size_t w = 0; w < wet; w += stride) {
-        double top = level;
-        for (const DrainHole* hole : holes)
-            top = std::min(top, cone_height(*hole, patches_.site[basin.patch[w]], gravity));
-        kept += basin.horizontal_area[w] * std::max(0.0, top - basin.height[w]);
-        probed_depth += basin.horizontal_area[w] * (level - basin.height[w]);
-    }
-    return probed_depth > 0.0 ? std::clamp(1.0 - kept / probed_depth, 0.0, 1.0) : 0.0;
-}
-
-std::vector<std::vector<float>> DrainabilityModel::turn_capture(
-    const std::vector<DrainHole>& holes, const std::vector<std::vector<double>>& pools) const {
-    std::vector<std::vector<float>> capture(turns_.size(), std::vector<float>(patches_.size(), 0.0f));
-    tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
-        std::vector<std::pair<int32_t, const DrainHole*>> drained;
-        for (const DrainHole& hole : holes) {
-            const int32_t basin = drained_basin(hole, turns_[k]);
-            if (basin >= 0) drained.push_back({basin, &hole});
-        }
-        std::sort(drained.begin(), drained.end());
-        for (size_t a = 0; a < drained.size();) {
-            size_t b = a;
-            std::vector<const DrainHole*> together;
-            while (b < drained.size() && drained[b].first == drained[a].first) together.push_back(drained[b++].second);
-            const size_t basin = size_t(drained[a].first);
-            const float fraction = float(pool_drain_fraction(k, basin, pools[k][basin], together, 0));
-            for (uint32_t j : turn_region_members_[k][basin]) capture[k][j] = fraction;
-            a = b;
-        }
-    });
-    return capture;
-}
-
-DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes) const {
-    const size_t n = patches_.size();
-    DrainEvaluation result;
-    result.total_volume = powder_.total_volume();
-    result.drained_first.assign(powder_.position.size(), 0);
-    for (const DrainHole& hole : holes)
-        for_each_first_turn_sample(hole, [&](uint32_t s) { result.drained_first[s] = 1; });
-    result.retained_mass.assign(n, 0.0);
-    for (size_t s = 0; s < powder_.position.size(); ++s) {
-        if (result.drained_first[s])
-            result.drained_first_volume += powder_.sample_volume;
-        else
-            result.retained_mass[powder_.rest_patch[s]] += powder_.sample_volume;
-    }
-
-    Eigen::VectorXd leave;
-    const SparseMatrix captured =
-        captured_part(turns_, n, turn_capture(holes, pool_volumes(result.retained_mass)), &leave);
-    const Eigen::VectorXd d = solve(chain_->base, captured, options_.effort, options_.effort * leave);
-
-    result.drainability.resize(n);
-    result.residual_per_cavity.assign(patches_.cavity_count, 0.0);
-    for (size_t j = 0; j < n; ++j) {
-        result.drainability[j] = std::clamp(d[int(j)], 0.0, 1.0);
-        const double stays = result.retained_mass[j] * (1.0 - result.drainability[j]);
-        result.residual_per_cavity[patches_.cavity[j]] += stays;
-        result.residual_volume += stays;
+DrainabilityModel::Cone DrainabilityModel::cone(const DrainHole& hole, const Vec3& gravity) const {
+    Cone result;
+    result.gravity = gravity;
+    result.tan_repose = tan_repose_;
+    if (steep(hole, gravity)) {
+        // The crater's cone of repose rises from the rim of the mouth, not its centre.
+        result.apex = hole.center;
+        result.mouth = 0.5 * hole.diameter;
+    } else {
+        result.apex = outer_lip(hole, gravity);
     }
     return result;
 }
 
-std::vector<double> DrainabilityModel::estimate_gains(const std::vector<DrainHole>& holes,
-                                                      const DrainEvaluation& current,
-                                                      const std::vector<DrainHole>& candidates) const {
-    const size_t n = patches_.size();
-    const std::vector<std::vector<double>> pools = pool_volumes(current.retained_mass);
-    const std::vector<std::vector<float>> capture = turn_capture(holes, pools);
-    const double weight = 1.0 / double(turns_.size());
-    const double rho = options_.effort;
+bool DrainabilityModel::Cone::below(const Vec3& point) const {
+    const Vec3 v{point[0] - apex[0], point[1] - apex[1], point[2] - apex[2]};
+    const double rise = -dot(v, gravity);
+    const double across_squared = std::max(0.0, dot(v, v) - rise * rise);
+    if (across_squared <= mouth * mouth) return rise < -mouth;
+    if (rise < 0.0) return true;
+    const double reach = rise / tan_repose + mouth;  // the cone's radius at this height
+    return reach * reach < across_squared;
+}
 
-    // Expected discounted presence u = (I − ρQ)^-T m' of the retained powder.
-    Eigen::VectorXd retained(static_cast<Eigen::Index>(n));
-    for (size_t j = 0; j < n; ++j) retained[int(j)] = current.retained_mass[j];
-    const Eigen::VectorXd presence =
-        solve(chain_->base_transposed, SparseMatrix(captured_part(turns_, n, capture, nullptr).transpose()),
-              options_.effort, retained);
+double DrainabilityModel::total_volume() const { return powder_.total_volume(); }
 
-    // Per turn orientation and basin: the powder arriving there in a turn
-    // times its chance of staying otherwise, and the holes draining it.
-    std::vector<std::vector<double>> arrival_value(turns_.size());
-    std::vector<std::vector<std::vector<const DrainHole*>>> basin_holes(turns_.size());
-    tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
-        const OrientationFlow& flow = turns_[k];
-        arrival_value[k].assign(turn_basins_[k].size(), 0.0);
-        basin_holes[k].resize(turn_basins_[k].size());
-        for (size_t i = 0; i < n; ++i)
-            for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e) {
-                const uint32_t j = flow.settle.column[e];
-                if (flow.region[j] < 0) continue;
-                arrival_value[k][size_t(flow.region[j])] +=
-                    rho * weight * presence[int(i)] * flow.settle.weight[e] * (1.0 - current.drainability[j]);
-            }
-        for (const DrainHole& hole : holes) {
-            const int32_t basin = drained_basin(hole, flow);
-            if (basin >= 0) basin_holes[k][size_t(basin)].push_back(&hole);
-        }
-    });
-
-    // First-turn powder still in the part, per basin of the printing
-    // orientation: at most kGainSamples samples each, standing for the rest.
-    std::vector<std::vector<uint32_t>> undrained(first_region_samples_.size());
-    std::vector<double> undrained_weight(first_region_samples_.size(), 0.0);
-    for (size_t region = 0; region < first_region_samples_.size(); ++region) {
-        std::vector<uint32_t> all;
-        for (uint32_t s : first_region_samples_[region])
-            if (!current.drained_first[s]) all.push_back(s);
-        const size_t stride = (all.size() + kGainSamples - 1) / kGainSamples;
-        for (size_t e = 0; e < all.size(); e += std::max<size_t>(stride, 1)) undrained[region].push_back(all[e]);
-        undrained_weight[region] = powder_.sample_volume * double(std::max<size_t>(stride, 1));
+template <class Visit>
+void DrainabilityModel::walk_drained(const DrainHole& hole, const SampleGrid& grid, const SublevelForest& forest,
+                                     const Vec3& gravity, Visit visit) const {
+    if (!absorbing(hole, gravity)) return;
+    uint32_t a = grid.nearest(hole.center);
+    if (a == kNoSample) return;
+    const Cone crater = cone(hole, gravity);
+    while (true) {
+        if (!crater.below(powder_.position[grid.sample[a]])) visit(a);
+        if (forest.parent[a] == a) break;
+        a = forest.parent[a];
     }
+}
 
-    std::vector<double> gains(candidates.size(), 0.0);
-    tbb::parallel_for(size_t(0), candidates.size(), [&](size_t c) {
-        double gain = 0.0;
-        const int32_t first_basin = drained_basin(candidates[c], first_);
-        if (first_basin >= 0)
-            for (uint32_t s : undrained[size_t(first_basin)])
-                if (above_cone(candidates[c], powder_.position[s], first_.gravity))
-                    gain += undrained_weight[size_t(first_basin)] * (1.0 - current.drainability[powder_.rest_patch[s]]);
+namespace {
+
+void set_bit(std::vector<uint64_t>& bits, size_t i) { bits[i >> 6] |= uint64_t(1) << (i & 63); }
+bool bit(const std::vector<uint64_t>& bits, size_t i) { return (bits[i >> 6] >> (i & 63)) & 1u; }
+
+//! Set bits below position `i` (fractional: the bit at floor(i) counts in part),
+//! given `before[w]` = set bits in the words before w.
+double count_below(const std::vector<uint64_t>& bits, const std::vector<uint32_t>& before, double i, size_t size) {
+    const size_t whole = std::min(size_t(i), size);
+    const size_t w = whole >> 6;
+    double count = before[w];
+    if (whole & 63) count += __builtin_popcountll(bits[w] & ((uint64_t(1) << (whole & 63)) - 1));
+    if (whole < size && bit(bits, whole)) count += i - double(whole);
+    return count;
+}
+
+std::vector<uint32_t> words_before(const std::vector<uint64_t>& bits) {
+    std::vector<uint32_t> before(bits.size() + 1, 0);
+    for (size_t w = 0; w < bits.size(); ++w) before[w + 1] = before[w] + uint32_t(__builtin_popcountll(bits[w]));
+    return before;
+}
+
+}  // namespace
+
+DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole) const {
+    Reach result;
+    result.cavity = hole.cavity;
+    result.first.assign((first_grid_.size() + 63) / 64, 0);
+    walk_drained(hole, first_grid_, first_forest_, first_.gravity, [&](uint32_t a) { set_bit(result.first, a); });
+    result.later.resize(turns_.size());
+    const size_t words = (size_t(later_count_[hole.cavity]) + 63) / 64;
+    for (size_t k = 0; k < turns_.size(); ++k)
+        walk_drained(hole, later_grid_, later_forests_[k], turns_[k].gravity, [&](uint32_t a) {
+            if (result.later[k].empty()) result.later[k].assign(words, 0);
+            set_bit(result.later[k], later_cavity_rank_[k][a]);
+        });
+    return result;
+}
+
+DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& holes) const {
+    std::vector<Reach> reaches(holes.size());
+    tbb::parallel_for(size_t(0), holes.size(), [&](size_t h) { reaches[h] = reach(holes[h]); });
+    Drain result;
+    result.holes = holes;
+    result.first.assign((first_grid_.size() + 63) / 64, 0);
+    result.later.assign(turns_.size(), std::vector<std::vector<uint64_t>>(patches_.cavity_count));
+    for (const Reach& r : reaches) {
+        for (size_t w = 0; w < r.first.size(); ++w) result.first[w] |= r.first[w];
         for (size_t k = 0; k < turns_.size(); ++k) {
-            const int32_t basin = drained_basin(candidates[c], turns_[k]);
-            if (basin < 0 || arrival_value[k][size_t(basin)] <= 0.0) continue;
-            std::vector<const DrainHole*> together = basin_holes[k][size_t(basin)];
-            const double before =
-                together.empty() ? 0.0 : capture[k][turn_region_members_[k][size_t(basin)].front()];
-            together.push_back(&candidates[c]);
-            const double after =
-                pool_drain_fraction(k, size_t(basin), pools[k][size_t(basin)], together, kGainProbes);
-            gain += std::max(0.0, after - before) * arrival_value[k][size_t(basin)];
+            if (r.later[k].empty()) continue;
+            std::vector<uint64_t>& bits = result.later[k][r.cavity];
+            if (bits.empty()) bits.assign(r.later[k].size(), 0);
+            for (size_t w = 0; w < bits.size(); ++w) bits[w] |= r.later[k][w];
         }
-        gains[c] = gain;
-    });
-    return gains;
+    }
+    result.later_before.resize(turns_.size());
+    for (size_t k = 0; k < turns_.size(); ++k) {
+        result.later_before[k].resize(patches_.cavity_count);
+        for (uint32_t c = 0; c < patches_.cavity_count; ++c)
+            if (!result.later[k][c].empty()) result.later_before[k][c] = words_before(result.later[k][c]);
+    }
+    result.retained_first.assign(patches_.cavity_count, 0);
+    for (size_t a = 0; a < first_grid_.size(); ++a) {
+        if (bit(result.first, a))
+            result.drained_first_volume += powder_.sample_volume;
+        else
+            ++result.retained_first[first_cavity_[a]];
+    }
+    result.residual_per_cavity.assign(patches_.cavity_count, 0.0);
+    for (uint32_t c = 0; c < patches_.cavity_count; ++c)
+        if (first_count_[c] > 0)
+            result.residual_per_cavity[c] =
+                later_residual_share(c, double(result.retained_first[c]) / double(first_count_[c]), result, nullptr) *
+                double(first_count_[c]) * powder_.sample_volume;
+    return result;
+}
+
+double DrainabilityModel::residual_with(const Drain& drain, const Reach& extra) const {
+    const uint32_t c = extra.cavity;
+    double others = 0.0;
+    for (uint32_t other = 0; other < patches_.cavity_count; ++other)
+        if (other != c) others += drain.residual_per_cavity[other];
+    if (first_count_[c] == 0) return others;
+    size_t fresh = 0;
+    for (size_t w = 0; w < extra.first.size(); ++w)
+        fresh += size_t(__builtin_popcountll(extra.first[w] & ~drain.first[w]));
+    const double share = double(drain.retained_first[c] - fresh) / double(first_count_[c]);
+    return others + later_residual_share(c, share, drain, &extra) * double(first_count_[c]) * powder_.sample_volume;
+}
+
+double DrainabilityModel::later_residual_share(uint32_t cavity, double start, const Drain& drain,
+                                               const Reach* extra) const {
+    const size_t count = later_count_[cavity];
+    if (!(start > 0.0)) return 0.0;
+    if (count == 0) return start;
+    // Per turn that drains anything, the pile after the turn (in level steps)
+    // for each pile level before it; the other turns leave the pile as it is.
+    std::vector<double> after;
+    size_t still = 0;
+    std::vector<uint64_t> bits;
+    std::vector<uint32_t> before;
+    for (size_t k = 0; k < turns_.size(); ++k) {
+        const std::vector<uint64_t>& base = drain.later[k][cavity];
+        const bool more = extra && !extra->later[k].empty();
+        if (base.empty() && !more) {
+            ++still;
+            continue;
+        }
+        if (more) {
+            bits = extra->later[k];
+            for (size_t w = 0; w < base.size(); ++w) bits[w] |= base[w];
+            before = words_before(bits);
+        }
+        const std::vector<uint64_t>& drained = more ? bits : base;
+        const std::vector<uint32_t>& drained_before = more ? before : drain.later_before[k][cavity];
+        for (int b = 0; b <= kPileLevels; ++b) {
+            const double pile = start * double(b) / kPileLevels * double(count);  // samples in the pile
+            const double left = pile - count_below(drained, drained_before, pile, count);
+            after.push_back(std::clamp(left / (start * double(count)) * kPileLevels, 0.0, double(b)));
+        }
+    }
+    const size_t moving = after.size() / (kPileLevels + 1);
+    const double turns = double(turns_.size());
+    std::vector<double> residual(kPileLevels + 1), next(kPileLevels + 1);
+    for (int b = 0; b <= kPileLevels; ++b) residual[size_t(b)] = start * double(b) / kPileLevels;
+    for (int t = 0; t < later_turns_; ++t) {
+        for (int b = 0; b <= kPileLevels; ++b) {
+            double sum = double(still) * residual[size_t(b)];
+            for (size_t k = 0; k < moving; ++k) {
+                const double u = after[k * (kPileLevels + 1) + size_t(b)];
+                const int low = std::min(int(u), kPileLevels - 1);
+                const double f = u - low;
+                sum += (1.0 - f) * residual[size_t(low)] + f * residual[size_t(low + 1)];
+            }
+            next[size_t(b)] = sum / turns;
+        }
+        residual.swap(next);
+    }
+    return residual[kPileLevels];
+}
+
+DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes) const {
+    const Drain drained = drain(holes);
+    DrainEvaluation result;
+    result.total_volume = powder_.total_volume();
+    result.drained_first_volume = drained.drained_first_volume;
+    result.residual_per_cavity = drained.residual_per_cavity;
+    for (double v : drained.residual_per_cavity) result.residual_volume += v;
+
+    // Per patch: each turn's moves end where the full pile drains for g.
+    const size_t n = patches_.size();
+    std::vector<std::vector<float>> capture(turns_.size(), std::vector<float>(n, 0.0f));
+    for (size_t k = 0; k < turns_.size(); ++k)
+        for (size_t j = 0; j < n; ++j) {
+            const uint32_t a = patch_sample_[j];
+            if (a == kNoSample) continue;
+            const std::vector<uint64_t>& bits = drained.later[k][later_cavity_[a]];
+            if (!bits.empty() && bit(bits, later_cavity_rank_[k][a])) capture[k][j] = 1.0f;
+        }
+    Eigen::VectorXd leave;
+    const SparseMatrix captured = captured_part(turns_, n, capture, &leave);
+    const Eigen::VectorXd d = solve(chain_->base, captured, options_.effort, options_.effort * leave);
+    result.drainability.resize(n);
+    for (size_t j = 0; j < n; ++j) result.drainability[j] = std::clamp(d[int(j)], 0.0, 1.0);
+    return result;
 }
 
 }  // namespace fabvdb::powder

@@ -1,34 +1,50 @@
-//! The drainability model of DESIGN.md (powder/): given the settle matrices of
-//! the turn orientations, the first (printing) orientation's flow and the
+//! The drainability model of DESIGN.md (powder/): given the flows of the
+//! turn orientations, the first (printing) orientation's flow and the
 //! dropped powder, it evaluates a set of drain holes.
 //!
-//! - A hole is absorbing for gravity g when its axis is within 90° − θ_r of g
-//!   (powder slides down the tunnel). Powder above the hole's cone of repose
-//!   (a crater of slope θ_r rising from the rim of its mouth) drains.
-//! - First turn (the part as printed, full of powder): each powder sample is
-//!   tested against the cones of the holes in the basin it settles in.
-//! - Later turns: the operator turns the part with probability ρ (finite
-//!   effort) to an orientation of the set (equal weights); powder moves by
-//!   S(g) and gathers as a pool in the basin where it settles. The pool has a
-//!   volume: it fills the basin (the up-facing patches draining into it, as
-//!   a height field) to the level that holds the powder retained after the
-//!   first turn, and the part of it above the cones of the basin's holes
-//!   leaves. That fraction of the powder settling in the basin leaves; the
-//!   rest stays for the next turn. Drainability d = ρ(r + Q d) per patch,
-//!   one sparse solve (BiCGSTAB).
-//! - Residual = cavity volume − first-turn drain − Σ retained mass · d.
-//! A class because the hole search evaluates many hole sets on the same flows.
+//! - A hole whose axis is within 90° − θ_r of gravity g passes whatever
+//!   reaches its tunnel (powder slides down it): powder above its cone of
+//!   repose (a crater of slope θ_r rising from the rim of its mouth) drains.
+//!   A flatter tunnel (a hole in a side wall) holds a slope of repose rising
+//!   from its outer lip (the lowest point of the outer mouth): it passes
+//!   powder when that slope meets the inner mouth below its top, and the
+//!   powder above the cone of slope θ_r rising from the outer lip drains.
+//!   Either way powder drains only if it can reach the mouth without
+//!   climbing: joined to it through powder no higher than itself
+//!   (sublevel_forest.h, on the powder samples' grid).
+//! - The powder is one pile per cavity. As printed the cavity is full; after
+//!   every turn the powder left forms a pile filling the lowest part of the
+//!   cavity (by the samples' heights) for the next gravity, and the pile's
+//!   samples that drain leave. So a turn maps the pile's share x of the
+//!   cavity to F_g(x) ≤ x: the pile keeps no memory of where it lay before,
+//!   and every open hole it covers drains it.
+//! - The routine: the part as printed, then T = round(ρ / (1 − ρ)) turns
+//!   (the mean count of the finite-effort chain: the operator turns once
+//!   more with probability ρ) to orientations of the set, equal weights. The
+//!   expected residual share R_T(x), R_0(x) = x, R_t(x) = mean_g
+//!   R_{t−1}(F_g(x)), is computed on a grid of pile shares. A fixed count,
+//!   not a geometric one: a geometric count leaves a tenth of the powder
+//!   retained after the first turn in the part (the chance of no turn at
+//!   all), which the reference simulation of an operator's routine does not.
+//! - Drainability per patch (the heat map): the chance that powder resting on
+//!   patch i leaves with finite effort, d = ρ(r + Q d), one sparse solve
+//!   (BiCGSTAB) of the chain Σ_g w_g S(g) whose moves end where the full
+//!   pile drains for g.
+//! The as-printed turn uses every powder sample; later turns a grid coarser
+//! by a whole stride (a uniform subsample of about 2500). A class because the hole search
+//! evaluates many hole sets on the same flows.
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <memory>
+#include <vector>
 
 #include "core/mesh.h"
 #include "powder/cavity_patches.h"
 #include "powder/orientation_flows.h"
 #include "powder/powder_drop.h"
+#include "powder/sample_grid.h"
+#include "powder/sublevel_forest.h"
 
 namespace fabvdb::powder {
 
@@ -38,6 +54,7 @@ struct DrainHole {
     Vec3 axis{0, 0, 1};    //!< unit, from the cavity out through the wall
     double diameter = 4.0;
     double depth = 0.0;    //!< drilled length from `center` along `axis` (through the wall and beyond)
+    double through = 0.0;  //!< tunnel length from `center` along `axis` to the outer surface
     uint32_t cavity = 0;
 };
 
@@ -51,8 +68,6 @@ struct DrainabilityOptions {
 
 struct DrainEvaluation {
     std::vector<double> drainability;  //!< per patch
-    std::vector<char> drained_first;   //!< per powder sample
-    std::vector<double> retained_mass; //!< per patch, after the first turn (mm³)
     std::vector<double> residual_per_cavity;  //!< mm³
     double drained_first_volume = 0.0;
     double residual_volume = 0.0;
@@ -65,46 +80,65 @@ public:
     //! Keeps references to all arguments: they must outlive the model.
     DrainabilityModel(const CavityPatches& patches, const std::vector<OrientationFlow>& turns,
                       const OrientationFlow& first, const PowderSamples& powder, const DrainabilityOptions& options);
+    ~DrainabilityModel();
 
+    //! The residual and the drainability of every patch.
     DrainEvaluation evaluate(const std::vector<DrainHole>& holes) const;
 
-    //! First-order gain in drained volume (mm³) of adding each candidate to
-    //! `holes`, whose evaluation is `current`: newly captured first-turn
-    //! samples, and per turn orientation the rise of the basin's leaving
-    //! fraction times the powder arriving there, each times its chance
-    //! (1 − d) of staying otherwise. Parallel over candidates.
-    std::vector<double> estimate_gains(const std::vector<DrainHole>& holes, const DrainEvaluation& current,
-                                       const std::vector<DrainHole>& candidates) const;
+    //! What one hole drains alone: bits over the first turn's samples, and
+    //! per turn (empty where it drains nothing) over its cavity's later-turn
+    //! samples, lowest first.
+    struct Reach {
+        uint32_t cavity = 0;
+        std::vector<uint64_t> first;
+        std::vector<std::vector<uint64_t>> later;
+    };
+    Reach reach(const DrainHole& hole) const;
+    //! What a hole set drains, turn by turn (for incremental evaluation).
+    struct Drain {
+        std::vector<DrainHole> holes;
+        std::vector<uint64_t> first;
+        //! Per turn and cavity: bits of the drained samples, lowest first
+        //! (empty: none), and the set bits before each word.
+        std::vector<std::vector<std::vector<uint64_t>>> later;
+        std::vector<std::vector<std::vector<uint32_t>>> later_before;
+        std::vector<uint32_t> retained_first;  //!< per cavity: samples left after the first turn
+        std::vector<double> residual_per_cavity;  //!< mm³
+        double drained_first_volume = 0.0;
+    };
+    Drain drain(const std::vector<DrainHole>& holes) const;
+    //! Residual volume (mm³) of `drain`'s holes plus the hole of `extra`,
+    //! without changing `drain`. Thread-safe.
+    double residual_with(const Drain& drain, const Reach& extra) const;
+    double total_volume() const;
 
-    //! Whether `hole` drains powder at `point` for gravity `gravity` (point
-    //! above the hole's cone of repose, or in its mouth).
-    bool above_cone(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const;
-    //! Height (along −gravity) of the hole's cone of repose above `point`'s spot.
-    double cone_height(const DrainHole& hole, const Vec3& point, const Vec3& gravity) const;
+    //! Whether powder can leave through the hole's tunnel for `gravity`.
     bool absorbing(const DrainHole& hole, const Vec3& gravity) const;
 
 private:
-    //! Up-facing patches draining into one basin (floor region) of one turn
-    //! orientation, lowest first: the basin as a height field.
-    struct Basin {
-        std::vector<uint32_t> patch;
-        std::vector<double> height, horizontal_area;
+    //! The cone of repose a hole leaves for one gravity: rising with slope
+    //! θ_r from the rim of the mouth (a steep tunnel; in its mouth powder
+    //! drains down to one radius below the centre) or from the outer lip.
+    struct Cone {
+        Vec3 apex{0, 0, 0}, gravity{0, 0, -1};
+        double mouth = 0.0, tan_repose = 0.0;
+        //! Whether powder at `point` stays (under the cone).
+        bool below(const Vec3& point) const;
     };
-    //! Pool volume per basin per turn orientation: the powder retained after
-    //! the first turn, moved by S(g).
-    std::vector<std::vector<double>> pool_volumes(const std::vector<double>& retained_mass) const;
-    //! Fraction of a pool of `volume` in basin `basin` of turn `turn` that
-    //! lies above the cone of at least one of `holes`, measured on every wet
-    //! patch (max_probes 0) or on about `max_probes` of them spread in height.
-    double pool_drain_fraction(size_t turn, size_t basin, double volume,
-                               const std::vector<const DrainHole*>& holes, size_t max_probes) const;
-    //! Leaving fraction per patch per turn orientation for a hole set.
-    std::vector<std::vector<float>> turn_capture(const std::vector<DrainHole>& holes,
-                                                 const std::vector<std::vector<double>>& pools) const;
-    //! The basin of `flow` that `hole` drains, or −1 (not absorbing, or no basin).
-    int32_t drained_basin(const DrainHole& hole, const OrientationFlow& flow) const;
+    Cone cone(const DrainHole& hole, const Vec3& gravity) const;
+    //! Whether the tunnel is steeper than the angle of repose for `gravity`.
+    bool steep(const DrainHole& hole, const Vec3& gravity) const;
+    //! The lowest point of the hole's outer mouth for `gravity`.
+    Vec3 outer_lip(const DrainHole& hole, const Vec3& gravity) const;
+    //! Calls `visit(sample)` for each sample of `grid` that drains through
+    //! `hole` for `gravity` (`forest` is the grid's for that gravity).
     template <class Visit>
-    void for_each_first_turn_sample(const DrainHole& hole, Visit visit) const;
+    void walk_drained(const DrainHole& hole, const SampleGrid& grid, const SublevelForest& forest,
+                      const Vec3& gravity, Visit visit) const;
+    //! Expected residual share of cavity `cavity` after the later turns from
+    //! a pile share `start` after the first, with what `drain` (and `extra`,
+    //! if not null) drains.
+    double later_residual_share(uint32_t cavity, double start, const Drain& drain, const Reach* extra) const;
 
     const CavityPatches& patches_;
     const std::vector<OrientationFlow>& turns_;
@@ -112,14 +146,20 @@ private:
     const PowderSamples& powder_;
     DrainabilityOptions options_;
     double tan_repose_ = 0.0, sin_repose_ = 0.0;
-    //! Patches of each floor region, per turn orientation.
-    std::vector<std::vector<std::vector<uint32_t>>> turn_region_members_;
-    std::vector<std::vector<Basin>> turn_basins_;
-    //! Powder samples per first-orientation floor region.
-    std::vector<std::vector<uint32_t>> first_region_samples_;
+    int later_turns_ = 9;
+    SampleGrid first_grid_, later_grid_;
+    SublevelForest first_forest_;
+    std::vector<SublevelForest> later_forests_;
+    //! Per sample of each grid: its cavity. Per cavity: sample count of each grid.
+    std::vector<uint32_t> first_cavity_, later_cavity_;
+    std::vector<uint32_t> first_count_, later_count_;
+    //! Per turn, per later-turn sample: its rank within its cavity, lowest first.
+    std::vector<std::vector<uint32_t>> later_cavity_rank_;
+    //! Per patch: the later-turn sample nearest its site (kNoSample if none).
+    std::vector<uint32_t> patch_sample_;
     //! I − ρ Σ_g w_g S(g), the turn chain without holes (Eigen, defined in the .cpp).
     struct TurnChain;
-    std::shared_ptr<const TurnChain> chain_;
+    std::unique_ptr<const TurnChain> chain_;
 };
 
 }  // namespace fabvdb::powder

@@ -85,6 +85,7 @@ std::vector<DrainHole> hole_candidates(const CavityPatches& patches, const openv
         hole.axis = vec(axis);
         hole.diameter = options.diameter;
         hole.depth = through + options.diameter;
+        hole.through = through;
         hole.cavity = patches.cavity[i];
         found[i] = hole;
     });

@@ -3,6 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+
+#include <tbb/parallel_for.h>
 
 #include "core/error.h"
 
@@ -10,38 +14,121 @@ namespace fabvdb::powder {
 
 namespace {
 
+double distance(const DrainHole& a, const DrainHole& b) {
+    const double x = a.center[0] - b.center[0], y = a.center[1] - b.center[1], z = a.center[2] - b.center[2];
+    return std::sqrt(x * x + y * y + z * z);
+}
+
 struct Choice {
     size_t candidate = 0;
-    DrainEvaluation evaluation;
+    double residual = 0.0;
     bool found = false;
 };
 
-//! The best allowed candidate to add to `holes`: top estimates checked exactly.
-Choice best_addition(const DrainabilityModel& model, const std::vector<DrainHole>& candidates,
-                     const std::vector<DrainHole>& holes, const DrainEvaluation& current, int only_cavity,
-                     const HoleSearchOptions& options) {
-    const std::vector<double> gains = model.estimate_gains(holes, current, candidates);
-    std::vector<size_t> allowed;
-    for (size_t c = 0; c < candidates.size(); ++c)
-        if ((only_cavity < 0 || candidates[c].cavity == uint32_t(only_cavity)) &&
-            spaced_from(candidates[c], holes, options.min_center_distance))
-            allowed.push_back(c);
-    const size_t checks = std::min(allowed.size(), size_t(std::max(1, options.exact_checks)));
-    std::partial_sort(allowed.begin(), allowed.begin() + checks, allowed.end(),
-                      [&](size_t a, size_t b) { return gains[a] > gains[b]; });
-    Choice best;
-    for (size_t k = 0; k < checks; ++k) {
-        std::vector<DrainHole> trial = holes;
-        trial.push_back(candidates[allowed[k]]);
-        DrainEvaluation evaluation = model.evaluate(trial);
-        if (!best.found || evaluation.residual_volume < best.evaluation.residual_volume) {
-            best.candidate = allowed[k];
-            best.evaluation = std::move(evaluation);
-            best.found = true;
+class Search {
+public:
+    Search(const DrainabilityModel& model, const std::vector<DrainHole>& candidates, const HoleSearchOptions& options)
+        : model_(model), candidates_(candidates), options_(options) {
+        // Representatives in candidate order, each farther than the spacing
+        // from those before; every candidate joins its nearest.
+        for (size_t c = 0; c < candidates.size(); ++c) {
+            bool near = false;
+            for (size_t r : representatives_)
+                near = near || distance(candidates[c], candidates[r]) < options.min_center_distance;
+            if (!near) representatives_.push_back(c);
         }
+        members_.resize(representatives_.size());
+        for (size_t c = 0; c < candidates.size(); ++c) {
+            size_t nearest = 0;
+            for (size_t r = 1; r < representatives_.size(); ++r)
+                if (distance(candidates[c], candidates[representatives_[r]]) <
+                    distance(candidates[c], candidates[representatives_[nearest]]))
+                    nearest = r;
+            members_[nearest].push_back(c);
+        }
+        bound_.assign(representatives_.size(), std::numeric_limits<double>::infinity());
+        reach_.resize(candidates.size());
     }
-    return best;
-}
+
+    //! Residuals of `sites` (candidate indices) added to `drain`'s holes, in
+    //! parallel; each candidate's reach is computed once and kept.
+    std::vector<double> residuals_with(const DrainabilityModel::Drain& drain, const std::vector<size_t>& sites) {
+        tbb::parallel_for(size_t(0), sites.size(), [&](size_t k) {
+            if (!reach_[sites[k]]) reach_[sites[k]] = std::make_unique<DrainabilityModel::Reach>(model_.reach(candidates_[sites[k]]));
+        });
+        std::vector<double> residual(sites.size());
+        tbb::parallel_for(size_t(0), sites.size(),
+                          [&](size_t k) { residual[k] = model_.residual_with(drain, *reach_[sites[k]]); });
+        return residual;
+    }
+
+    //! The lowest residual among `sites` added to `drain`'s holes.
+    Choice best_of(const DrainabilityModel::Drain& drain, const std::vector<size_t>& sites) {
+        const std::vector<double> residual = residuals_with(drain, sites);
+        Choice best;
+        for (size_t k = 0; k < sites.size(); ++k)
+            if (!best.found || residual[k] < best.residual) best = {sites[k], residual[k], true};
+        return best;
+    }
+
+    bool allowed(size_t c, const std::vector<DrainHole>& holes, int only_cavity) const {
+        return (only_cavity < 0 || candidates_[c].cavity == uint32_t(only_cavity)) &&
+               spaced_from(candidates_[c], holes, options_.min_center_distance);
+    }
+
+    //! The best candidate to add to `drain`'s holes (lazy greedy over the
+    //! representatives, then the chosen one's group).
+    Choice best_addition(const DrainabilityModel::Drain& drain, double current, int only_cavity) {
+        std::vector<size_t> open;
+        for (size_t r = 0; r < representatives_.size(); ++r)
+            if (allowed(representatives_[r], drain.holes, only_cavity)) open.push_back(r);
+        std::sort(open.begin(), open.end(), [&](size_t a, size_t b) { return bound_[a] > bound_[b]; });
+        const size_t batch = 8;
+        double best_gain = -std::numeric_limits<double>::infinity();
+        size_t best = 0;
+        for (size_t next = 0; next < open.size();) {
+            // A first visit (infinite bound) evaluates every unseen representative at once.
+            size_t end = std::min(open.size(), next + batch);
+            while (end < open.size() && std::isinf(bound_[open[end]])) ++end;
+            std::vector<size_t> sites;
+            for (size_t k = next; k < end; ++k) sites.push_back(representatives_[open[k]]);
+            const std::vector<double> residual = residuals_with(drain, sites);
+            for (size_t k = next; k < end; ++k) {
+                bound_[open[k]] = current - residual[k - next];
+                if (bound_[open[k]] > best_gain) {
+                    best_gain = bound_[open[k]];
+                    best = open[k];
+                }
+            }
+            next = end;
+            if (next < open.size() && best_gain >= bound_[open[next]]) break;
+        }
+        if (open.empty()) return {};
+        std::vector<size_t> group;
+        for (size_t c : members_[best])
+            if (allowed(c, drain.holes, only_cavity)) group.push_back(c);
+        return best_of(drain, group);
+    }
+
+    //! The best candidate within half the spacing of `hole` to add to `drain`'s holes.
+    Choice best_move(const DrainabilityModel::Drain& drain, const DrainHole& hole, int only_cavity) {
+        std::vector<size_t> near;
+        for (size_t c = 0; c < candidates_.size(); ++c)
+            if (distance(candidates_[c], hole) < 0.5 * options_.min_center_distance &&
+                allowed(c, drain.holes, only_cavity))
+                near.push_back(c);
+        return best_of(drain, near);
+    }
+
+private:
+    const DrainabilityModel& model_;
+    const std::vector<DrainHole>& candidates_;
+    const HoleSearchOptions& options_;
+    std::vector<size_t> representatives_;
+    std::vector<std::vector<size_t>> members_;
+    std::vector<double> bound_;  //!< per representative: its last gain (an upper bound on the next)
+    std::vector<std::unique_ptr<const DrainabilityModel::Reach>> reach_;  //!< per candidate, once needed
+};
 
 }  // namespace
 
@@ -49,8 +136,13 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
                                     uint32_t cavity_count, const HoleSearchOptions& options, Progress& progress) {
     progress.stage("hole search");
     if (options.hole_count < 0) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the hole count cannot be negative");
+    Search search(model, candidates, options);
     HoleSearchResult result;
-    result.evaluation = model.evaluate(result.holes);
+    DrainabilityModel::Drain drain = model.drain(result.holes);
+    double residual = 0.0;
+    for (double v : drain.residual_per_cavity) residual += v;
+    const double total = model.total_volume();
+    const double negligible = 1e-6 * total;
     const bool automatic = options.hole_count == 0;
     const int per_cavity =
         automatic ? options.min_per_cavity
@@ -58,53 +150,50 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     const int ceiling = automatic ? std::max(options.max_holes, per_cavity * int(cavity_count)) : options.hole_count;
 
     std::vector<int> count(cavity_count, 0);
-    auto add = [&](Choice&& choice) {
+    auto add = [&](const Choice& choice) {
         result.holes.push_back(candidates[choice.candidate]);
         ++count[candidates[choice.candidate].cavity];
-        result.evaluation = std::move(choice.evaluation);
+        drain = model.drain(result.holes);
+        residual = choice.residual;
     };
     for (uint32_t cavity = 0; cavity < cavity_count; ++cavity)
         while (count[cavity] < per_cavity) {
             progress.check();
-            Choice choice = best_addition(model, candidates, result.holes, result.evaluation, int(cavity), options);
+            const Choice choice = search.best_addition(drain, residual, int(cavity));
             if (!choice.found) break;
-            add(std::move(choice));
+            add(choice);
         }
     while (int(result.holes.size()) < ceiling) {
         progress.update(double(result.holes.size()) / double(ceiling + 1));
-        if (automatic && result.evaluation.residual_fraction() < options.target_residual_fraction) break;
-        Choice choice = best_addition(model, candidates, result.holes, result.evaluation, -1, options);
+        if (automatic && residual < options.target_residual_fraction * total) break;
+        const Choice choice = search.best_addition(drain, residual, -1);
         if (!choice.found) break;
-        if (automatic && choice.evaluation.residual_volume >=
-                             result.evaluation.residual_volume - 1e-6 * result.evaluation.total_volume)
-            break;
-        add(std::move(choice));
+        if (automatic && choice.residual >= residual - negligible) break;
+        add(choice);
     }
 
-    // Local swaps: replace one hole by the best candidate while that helps.
+    // Local swaps: move one hole to a better site nearby while that helps.
     for (int pass = 0; pass < 2; ++pass) {
         bool improved = false;
         for (size_t h = 0; h < result.holes.size(); ++h) {
             progress.check();
             std::vector<DrainHole> others = result.holes;
-            const DrainHole removed = others[h];
+            const DrainHole moved = others[h];
             others.erase(others.begin() + long(h));
-            const DrainEvaluation without = model.evaluate(others);
-            const int only_cavity = count[removed.cavity] <= per_cavity ? int(removed.cavity) : -1;
-            Choice choice = best_addition(model, candidates, others, without, only_cavity, options);
-            if (!choice.found || choice.evaluation.residual_volume >=
-                                     result.evaluation.residual_volume - 1e-6 * result.evaluation.total_volume)
-                continue;
-            --count[removed.cavity];
+            const int only_cavity = count[moved.cavity] <= per_cavity ? int(moved.cavity) : -1;
+            const Choice choice = search.best_move(model.drain(others), moved, only_cavity);
+            if (!choice.found || choice.residual >= residual - negligible) continue;
+            --count[moved.cavity];
             ++count[candidates[choice.candidate].cavity];
             others.insert(others.begin() + long(h), candidates[choice.candidate]);
             result.holes = std::move(others);
-            result.evaluation = std::move(choice.evaluation);
+            residual = choice.residual;
             ++result.swaps;
             improved = true;
         }
         if (!improved) break;
     }
+    result.evaluation = model.evaluate(result.holes);
     progress.update(1.0);
     return result;
 }

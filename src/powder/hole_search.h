@@ -1,13 +1,18 @@
-//! The drain-hole search: chooses holes among candidate sites to maximise the
-//! powder the model drains. Greedy: each step ranks every allowed candidate
-//! by the model's first-order gain (DrainabilityModel::estimate_gains) and
-//! adds the best of the top few by exact evaluation; first each cavity gets
-//! its minimum number of holes, then holes go anywhere, up to `hole_count`
-//! (or, with hole_count 0, until the predicted residual is under
-//! `target_residual_fraction` or a hole no longer helps). Then local swaps:
-//! each hole in turn is replaced by the best candidate if that lowers the
-//! predicted residual. Holes keep `min_center_distance` between centres.
-//! Cancellable (Error(CANCELLED)).
+//! The drain-hole search: chooses holes among candidate sites to minimise
+//! the residual powder the model predicts. The candidates are grouped around
+//! representatives at least `min_center_distance` apart. Greedy: each step
+//! evaluates representatives exactly (DrainabilityModel::residual_with, in
+//! parallel) in the order of their last gain, lazily — a gain found is kept
+//! as the bound of later steps, and the step stops once the best fresh gain
+//! beats every bound left — then the best site among the chosen group's
+//! members. First each cavity gets its minimum number of holes, then holes
+//! go anywhere, up to `hole_count` (or, with hole_count 0, until the
+//! predicted residual is under `target_residual_fraction` or a hole no longer
+//! helps). Then local swaps: each hole in turn moves to the best candidate
+//! within half of `min_center_distance` of it if that lowers the predicted
+//! residual.
+//! Holes keep `min_center_distance` between centres. Cancellable
+//! (Error(CANCELLED)).
 #pragma once
 
 #include <vector>
@@ -23,7 +28,6 @@ struct HoleSearchOptions {
     double target_residual_fraction = 0.01;
     int max_holes = 12;  //!< automatic mode's ceiling
     double min_center_distance = 8.0;
-    int exact_checks = 3;  //!< top estimates evaluated exactly per step
 };
 
 struct HoleSearchResult {

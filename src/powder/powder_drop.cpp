@@ -25,6 +25,7 @@ PowderSamples drop_cavity_powder(const openvdb::FloatGrid& cavity, const CavityP
     // Candidate points per x slab, kept in order so the result is deterministic.
     std::vector<std::vector<Vec3>> slab_points(nx);
     std::vector<std::vector<uint32_t>> slab_patches(nx);
+    std::vector<std::vector<std::array<int32_t, 3>>> slab_cells(nx);
     tbb::parallel_for(0, nx, [&](int ix) {
         if (progress.cancelled()) return;
         auto accessor = cavity.getConstAccessor();
@@ -38,14 +39,18 @@ PowderSamples drop_cavity_powder(const openvdb::FloatGrid& cavity, const CavityP
                 if (hit < 0) continue;
                 slab_points[ix].push_back(origin);
                 slab_patches[ix].push_back(first.main_destination[patches.patch_of_triangle[size_t(hit)]]);
+                slab_cells[ix].push_back({ix, iy, iz});
             }
     });
     progress.check();
     PowderSamples samples;
     samples.sample_volume = spacing * spacing * spacing;
+    samples.spacing = spacing;
+    samples.origin = {lo[0] + 0.5 * spacing, lo[1] + 0.5 * spacing, lo[2] + 0.5 * spacing};
     for (int ix = 0; ix < nx; ++ix) {
         samples.position.insert(samples.position.end(), slab_points[ix].begin(), slab_points[ix].end());
         samples.rest_patch.insert(samples.rest_patch.end(), slab_patches[ix].begin(), slab_patches[ix].end());
+        samples.cell.insert(samples.cell.end(), slab_cells[ix].begin(), slab_cells[ix].end());
     }
     if (samples.position.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the cavity holds no powder sample");
     progress.update(1.0);

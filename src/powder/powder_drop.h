@@ -3,9 +3,11 @@
 //! `max_samples` points, drops each along gravity onto the cavity surface
 //! (Embree) and follows the settle matrix to the patch where it comes to rest.
 //! Every sample stands for `sample_volume` mm³ of powder; their sum is the
-//! cavity volume to within the sampling. Cancellable (Error(CANCELLED)).
+//! cavity volume to within the sampling. Each sample keeps its grid cell
+//! (position = origin + cell · spacing). Cancellable (Error(CANCELLED)).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -23,6 +25,10 @@ struct PowderSamples {
     std::vector<Vec3> position;
     //! The patch where the sample's powder comes to rest in the first orientation.
     std::vector<uint32_t> rest_patch;
+    //! The sample's cell on the regular sampling grid.
+    std::vector<std::array<int32_t, 3>> cell;
+    Vec3 origin{0, 0, 0};
+    double spacing = 0.0;
     double sample_volume = 0.0;
 
     double total_volume() const { return sample_volume * double(position.size()); }
