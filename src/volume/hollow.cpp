@@ -16,7 +16,6 @@
 #include "volume/clean_solid.h"
 #include "volume/extract_mesh.h"
 #include "volume/memory_estimate.h"
-#include "volume/mesh_shells.h"
 #include "volume/repair.h"
 #include "volume/resolve_crossings.h"
 #include "volume/signed_distance.h"
@@ -114,16 +113,6 @@ void append(Mesh& to, const Mesh& from) {
     for (const Triangle& t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }
 
-//! `surface` without its shells under `min_volume` (solid or void): specks a
-//! repair leaves where the input's shells cross, below its voxel, which would
-//! otherwise float in the wall.
-Mesh without_specks(const Mesh& surface, double min_volume) {
-    std::vector<uint32_t> kept;
-    for (const MeshShell& shell : split_shells(surface))
-        if (std::abs(shell.volume) >= min_volume) kept.insert(kept.end(), shell.triangles.begin(), shell.triangles.end());
-    return sub_mesh(surface, kept);
-}
-
 }  // namespace
 
 double automatic_hollow_voxel(double wall) { return wall / 4.0; }
@@ -165,7 +154,7 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
         repair_options.distance.voxel_size = voxel;
         repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
         repair_options.distance.input_name = options.input_name;
-        outer = without_specks(repair(input, repair_options, progress).mesh, voxel * voxel * voxel);
+        outer = repair(input, repair_options, progress).mesh;
         result.outer_surface = "repaired";
         clock.lap("repair");
     }

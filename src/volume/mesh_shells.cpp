@@ -1,6 +1,7 @@
 //! Shells of a mesh (see mesh_shells.h).
 #include "volume/mesh_shells.h"
 
+#include <cmath>
 #include <numeric>
 
 namespace fabvdb::volume {
@@ -59,6 +60,21 @@ Mesh sub_mesh(const Mesh& mesh, const std::vector<uint32_t>& triangles) {
         out.triangles.push_back(copy);
     }
     return out;
+}
+
+MeshShellCounts drop_small_mesh_shells(Mesh& mesh, double min_volume) {
+    MeshShellCounts counts;
+    std::vector<uint32_t> kept;
+    for (const MeshShell& shell : split_shells(mesh)) {
+        if (std::abs(shell.volume) < min_volume) {
+            ++counts.dropped;
+            continue;
+        }
+        ++counts.kept;
+        kept.insert(kept.end(), shell.triangles.begin(), shell.triangles.end());
+    }
+    if (counts.dropped > 0) mesh = sub_mesh(mesh, kept);
+    return counts;
 }
 
 }  // namespace fabvdb::volume

@@ -21,4 +21,13 @@ std::vector<MeshShell> split_shells(const Mesh& mesh);
 //! The triangles of `mesh` listed in `triangles`, with only the vertices they use.
 Mesh sub_mesh(const Mesh& mesh, const std::vector<uint32_t>& triangles);
 
+struct MeshShellCounts {
+    uint64_t kept = 0;
+    uint64_t dropped = 0;
+};
+
+//! Removes from `mesh` its shells, solid or void, whose volume is under
+//! `min_volume` mm³ in magnitude (`mesh` is left as it is when none is).
+MeshShellCounts drop_small_mesh_shells(Mesh& mesh, double min_volume);
+
 }  // namespace fabvdb::volume

@@ -73,9 +73,9 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     RepairResult result;
     result.grid = signed_distance_from_mesh(mesh, options.distance, progress, &result.distance);
     auto& timings = result.distance.timings;
-    // Without a minimum volume nothing is dropped, and the shells are counted
-    // as the connected pieces of the extracted surface: cheaper than
-    // segmenting the grid, and what the output holds.
+    // Without a minimum volume no solid shell is dropped from the grid, and
+    // the shells are counted as the connected pieces of the extracted
+    // surface: cheaper than segmenting the grid, and what the output holds.
     const bool count_on_surface = options.extract && options.min_shell_volume == 0.0;
     if (!count_on_surface) {
         const ShellCounts shells = timed(timings, "shells", [&] {
@@ -87,9 +87,16 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
             throw Error(FABVDB_ERR_BAD_INPUT, options.distance.input_name + ": every shell is smaller than the minimum shell volume");
     }
     result.distance.active_voxels = result.grid->activeVoxelCount();
-    if (options.extract) extract_clean_surface(mesh, options, result, progress);
-    if (count_on_surface)
-        result.shells_kept = timed(timings, "shells", [&] { return uint64_t(split_shells(result.mesh).size()); });
+    if (!options.extract) return result;
+    extract_clean_surface(mesh, options, result, progress);
+    // Surface shells under a voxel's volume are specks of the extraction
+    // (a voxel barely below zero), not pieces of the solid: always dropped.
+    const double voxel = result.grid->voxelSize()[0];
+    const MeshShellCounts surface_shells = timed(timings, "shells", [&] {
+        return drop_small_mesh_shells(result.mesh, voxel * voxel * voxel);
+    });
+    result.shells_dropped += surface_shells.dropped;
+    if (count_on_surface) result.shells_kept = surface_shells.kept;
     return result;
 }
 

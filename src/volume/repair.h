@@ -1,7 +1,8 @@
 //! `fabvdb repair` as one operation: robust signed distance of a dirty mesh
 //! (signed_distance.h), small shells dropped (drop_small_shells.h), the
 //! surface extracted (extract_mesh.h) and snapped back onto the input where
-//! it is clean (snap_to_mesh.h). The output mesh is closed, 2-manifold,
+//! it is clean (snap_to_mesh.h); surface shells under a voxel's volume
+//! (specks of the extraction) are dropped. The output mesh is closed, 2-manifold,
 //! outward-oriented and free of self-intersections (checked with exact
 //! predicates; walls thinner than a voxel, whose two sides would touch, are
 //! grown by half a voxel until it is). Throws what its stages
@@ -24,7 +25,8 @@ struct RepairOptions {
     double adaptivity = 0.0;
     //! Snap the output onto the input where the input is clean.
     bool snap = true;
-    //! Shells under this volume (mm³) are dropped; 0 keeps all.
+    //! Solid shells under this volume (mm³) are dropped from the level set;
+    //! 0 keeps all (specks under a voxel's volume still leave the surface).
     double min_shell_volume = 0.0;
     //! false: stop after the level set (no mesh, no snapping).
     bool extract = true;
@@ -35,7 +37,7 @@ struct RepairResult {
     Mesh mesh;
     SignedDistanceStats distance;  // its timings hold every stage's
     uint64_t shells_kept = 0;  //!< connected pieces of the output surface (of the level set without extraction)
-    uint64_t shells_dropped = 0;
+    uint64_t shells_dropped = 0;  //!< shells under min_shell_volume, and specks
     uint64_t snapped_vertices = 0;
 };
 
