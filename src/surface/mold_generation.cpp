@@ -142,7 +142,7 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         CastPart cast;
         cast.id = model.parts[p].id;
         cast.direction = model.parts[p].direction;
-        cast.part = volume::double_height_field_mesh(*made[p], progress);
+        cast.part = volume::double_height_field_mesh(*made[p], progress, input_grid.get());
         const OverhangDeformation& deformation = deformations[p];
         cast.deformed_volume_change = deformation.volume_after - deformation.volume_before;
         cast.restored_volume = stats.volume_before - cast.deformed_volume_change;

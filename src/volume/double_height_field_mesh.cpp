@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <openvdb/tools/Dense.h>
+#include <openvdb/tools/Interpolation.h>
 
 #include "core/error.h"
 
@@ -29,9 +30,17 @@ float crossing(const float* column, size_t k) {
     return float(k) + a / (a - b);
 }
 
-Column scan_column(const float* column, size_t nz, float z0) {
+//! An inside run of a column: samples [start, end) are inside.
+struct Run {
+    size_t start, end;
+};
+
+//! Keeps the run that crosses the kept surface most (the input surface it
+//! carries), the longer on a tie; `crossings(run)` counts those crossings.
+template <typename CountCrossings>
+Column scan_column(const float* column, size_t nz, float z0, const CountCrossings& crossings) {
     Column c;
-    size_t best_start = 0, best_length = 0;
+    std::vector<Run> runs;
     size_t k_min = 0;
     for (size_t k = 0; k < nz;) {
         if (column[k] < column[k_min]) k_min = k;
@@ -44,22 +53,31 @@ Column scan_column(const float* column, size_t nz, float z0) {
             if (column[k] < column[k_min]) k_min = k;
             ++k;
         }
-        if (k - start > best_length) best_start = start, best_length = k - start;
+        runs.push_back({start, k});
     }
     c.minimum = column[k_min];
     c.at_minimum = z0 + float(k_min);
+    const Run* best = nullptr;
+    size_t best_crossings = 0;
+    for (const Run& run : runs) {
+        const size_t run_crossings = runs.size() > 1 ? crossings(run) : 0;
+        if (!best || run_crossings > best_crossings ||
+            (run_crossings == best_crossings && run.end - run.start > best->end - best->start))
+            best = &run, best_crossings = run_crossings;
+    }
     // The box has an outside sample at each end, so a run never touches it.
-    if (best_length > 0 && best_start > 0 && best_start + best_length < nz) {
+    if (best && best->start > 0 && best->end < nz) {
         c.inside = true;
-        c.lo = z0 + crossing(column, best_start - 1);
-        c.hi = z0 + crossing(column, best_start + best_length - 1);
+        c.lo = z0 + crossing(column, best->start - 1);
+        c.hi = z0 + crossing(column, best->end - 1);
     }
     return c;
 }
 
 }  // namespace
 
-Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress) {
+Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress,
+                              const openvdb::FloatGrid* kept_surface) {
     progress.stage("mold: part surface");
     openvdb::CoordBBox box = swept.evalActiveVoxelBoundingBox();
     if (box.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the swept part is empty");
@@ -73,7 +91,29 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
         openvdb::tools::copyToDense(swept, dense);
         progress.check();
         const float* data = dense.data();
-        for (size_t c = 0; c < columns.size(); ++c) columns[c] = scan_column(data + c * nz, nz, float(box.min().z()));
+        const openvdb::FloatGrid::ConstAccessor surface_accessor =
+            (kept_surface ? *kept_surface : swept).getConstAccessor();
+        const float z0 = float(box.min().z());
+        const openvdb::math::Transform& frame = swept.transform();
+        for (size_t c = 0; c < columns.size(); ++c) {
+            const int i = int(c / size_t(ny)) + box.min().x(), j = int(c % size_t(ny)) + box.min().y();
+            // Sign changes of the kept surface's level set over the run and
+            // the outside samples bounding it.
+            const auto crossings = [&](const Run& run) {
+                if (!kept_surface) return size_t(0);
+                size_t count = 0;
+                bool was_inside = false;
+                for (size_t k = run.start - 1; k <= run.end; ++k) {
+                    const openvdb::Vec3d world = frame.indexToWorld(openvdb::Vec3d(i, j, z0 + float(k)));
+                    const bool inside =
+                        openvdb::tools::BoxSampler::sample(surface_accessor, kept_surface->worldToIndex(world)) < 0;
+                    if (k > run.start - 1 && inside != was_inside) ++count;
+                    was_inside = inside;
+                }
+                return count;
+            };
+            columns[c] = scan_column(data + c * nz, nz, z0, crossings);
+        }
     }
     progress.update(0.5);
     const auto column_at = [&](int i, int j) -> const Column& { return columns[size_t(i) * size_t(ny) + size_t(j)]; };

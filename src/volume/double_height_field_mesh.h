@@ -2,8 +2,9 @@
 //! exact double height field along the grid's index z axis (the parting
 //! direction d): every line parallel to d crosses it at most twice, by
 //! construction, which an iso-surface extractor does not promise. Each index
-//! column (i, j) gives the interval where it is inside (its longest inside
-//! run, the zero crossings linearly interpolated); the shadow of the part is
+//! column (i, j) gives the interval where it is inside (one inside run, the
+//! zero crossings linearly interpolated: where other parts split a column,
+//! the run that carries the most of the kept surface, else the longest); the shadow of the part is
 //! the zero contour of the column minimum (a 2D distance to the shadow), found
 //! by marching squares with separated saddles; each marching-squares polygon
 //! is fanned from an inside column and lifted twice, to the column tops
@@ -20,7 +21,10 @@
 namespace fabvdb::volume {
 
 //! `swept`: a level set on a linear transform (sweep_double_height_field's
-//! result). Throws Error(BAD_INPUT) when no column is inside.
-Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress);
+//! result). `kept_surface`: a level set whose zero crossings a column's kept
+//! run should hold (the input surface; nullptr: the longest run). Throws
+//! Error(BAD_INPUT) when no column is inside.
+Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress,
+                              const openvdb::FloatGrid* kept_surface = nullptr);
 
 }  // namespace fabvdb::volume

@@ -77,6 +77,28 @@ TEST(DoubleHeightFieldMeshKeepOut, ColumnsWithTwoRunsKeepTheLongest) {
     EXPECT_TRUE(caster.inside({5, 5, 4.5}));
 }
 
+TEST(DoubleHeightFieldMeshKeepOut, ColumnsWithTwoRunsKeepTheOneHoldingTheKeptSurface) {
+    openvdb::initialize();
+    fabvdb::Progress progress;
+    // Same split box; a kept surface (a small box) lies in the shorter, upper
+    // runs of the columns through it: those columns keep their upper run,
+    // the others still the longer lower one.
+    const Mesh box = fabvdb::test::make_box({-6, -6, -6}, {6, 6, 6});
+    const Mesh slab = fabvdb::test::make_box({-3, -3, 1}, {3, 3, 3});
+    const Mesh kept = fabvdb::test::make_box({-1.5, -1.5, 4}, {1.5, 1.5, 5});
+    openvdb::FloatGrid::ConstPtr keep_out = plain_level_set(slab, 0.4);
+    auto swept =
+        fabvdb::volume::sweep_double_height_field(*plain_level_set(box, 0.4), {0, 0, 1}, {keep_out}, {}, progress);
+    const Mesh mesh = fabvdb::volume::double_height_field_mesh(*swept, progress, plain_level_set(kept, 0.4).get());
+    expect_exact_double_height_field(mesh, {0, 0, 1});
+    fabvdb::test::LineCaster caster(mesh, {0.01, 0.02, 1});
+    EXPECT_TRUE(caster.inside({0.1, 0.1, 4.5}));
+    EXPECT_FALSE(caster.inside({0.1, 0.1, -2}));
+    EXPECT_TRUE(caster.inside({2.5, 2.5, -2}));
+    EXPECT_FALSE(caster.inside({2.5, 2.5, 4.5}));
+    EXPECT_TRUE(caster.inside({5, 5, 4.5}));
+}
+
 TEST(DoubleHeightFieldMeshErrors, EmptyGridIsBadInputAndCancelIsHonoured) {
     openvdb::initialize();
     fabvdb::Progress progress;
