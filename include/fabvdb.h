@@ -221,7 +221,9 @@ typedef struct fabvdb_volume_options {
                                 100 mm part) */
     int half_band_voxels;    /* narrow band on each side, in voxels; default 3 (>= 2) */
     double adaptivity;       /* extraction adaptivity in [0, 1]; default 0 (uniform) */
-    double min_shell_volume; /* shells under this volume (mm^3) are dropped; default 0 (keep all) */
+    double min_shell_volume; /* shells under this volume (mm^3) are dropped; default 0
+                                (keep all but specks under a voxel's volume,
+                                which the extraction always drops) */
     double thicken;          /* > 0: an input enclosing no volume (an open sheet)
                                 becomes a solid sheet this thick (mm); default 0 */
     uint32_t flags;          /* FABVDB_REPAIR_* bits; default 0 */
