@@ -324,6 +324,20 @@ TEST(Repair, SmallShellsAreDroppedAndCounted) {
     for (const auto& v : result.mesh.vertices) EXPECT_LT(v[0], 15.0);
 }
 
+// A box far smaller than a voxel around a voxel centre makes that one voxel
+// barely negative: it extracts as a closed speck, which is dropped and counted.
+TEST(Repair, SpecksUnderAVoxelAreDropped) {
+    const Mesh mesh = fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 5.0, 3),
+                                           fabvdb::test::make_box({9.99, -0.01, -0.01}, {10.01, 0.01, 0.01}));
+    fabvdb::Progress progress;
+    volume::RepairOptions options;
+    options.distance.voxel_size = 0.25;
+    const volume::RepairResult result = volume::repair(mesh, options, progress);
+    EXPECT_EQ(result.shells_kept, 1u);
+    EXPECT_EQ(result.shells_dropped, 1u);
+    for (const auto& v : result.mesh.vertices) EXPECT_LT(v[0], 8.0);
+}
+
 TEST(Repair, EveryDisjointSolidCountsAsAShell) {
     const Mesh mesh = fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 5.0, 3),
                                            fabvdb::test::make_box({10, 0, 0}, {12, 2, 2}));
