@@ -30,7 +30,7 @@ auto timed(std::map<std::string, double>& timings, const char* stage, const Body
 // may touch: such a solid is grown by half a voxel (at most twice) until its
 // surface is a closed manifold without crossings. With snapping, the
 // crossing test of the snapped surface covers the extracted one as well.
-void extract_clean_surface(const Mesh& input, const RepairOptions& options, RepairResult& result,
+void extract_clean_surface(const OrientedInput& input, const RepairOptions& options, RepairResult& result,
                            Progress& progress) {
     auto& timings = result.distance.timings;
     for (int attempt = 0;; ++attempt) {
@@ -48,7 +48,8 @@ void extract_clean_surface(const Mesh& input, const RepairOptions& options, Repa
         bool crossing = false;
         if (options.snap) {
             const SnapResult snap = timed(timings, "snap", [&] {
-                return snap_to_mesh(result.mesh, input, result.grid->voxelSize()[0], progress);
+                return snap_to_mesh(result.mesh, input.mesh, *input.closest_triangle, result.grid->voxelSize()[0],
+                                    progress);
             });
             result.snapped_vertices = snap.moved_vertices;
             crossing = snap.self_intersecting;
@@ -71,7 +72,9 @@ double voxel_size_for_resolution(const Mesh& mesh, int resolution, const std::st
 
 RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& progress) {
     RepairResult result;
-    result.grid = signed_distance_from_mesh(mesh, options.distance, progress, &result.distance);
+    OrientedInput input;
+    result.grid = signed_distance_from_mesh(mesh, options.distance, progress, &result.distance,
+                                            options.extract && options.snap ? &input : nullptr);
     auto& timings = result.distance.timings;
     // Without a minimum volume no solid shell is dropped from the grid, and
     // the shells are counted as the connected pieces of the extracted
@@ -88,7 +91,7 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     }
     result.distance.active_voxels = result.grid->activeVoxelCount();
     if (!options.extract) return result;
-    extract_clean_surface(mesh, options, result, progress);
+    extract_clean_surface(input, options, result, progress);
     // Surface shells under a voxel's volume are specks of the extraction
     // (a voxel barely below zero), not pieces of the solid: always dropped.
     const double voxel = result.grid->voxelSize()[0];

@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -75,8 +76,10 @@ void check_budget(double area, const SignedDistanceOptions& options, SignedDista
     throw Error(FABVDB_ERR_OUT_OF_BUDGET, message.str());
 }
 
+// The unsigned distance within half_band voxels of the mesh and, into
+// `closest_triangle` when given, the index of the triangle nearest to each voxel.
 openvdb::FloatGrid::Ptr unsigned_band(const Mesh& mesh, const openvdb::math::Transform& transform, float half_band,
-                                      Progress& progress) {
+                                      Progress& progress, openvdb::Int32Grid* closest_triangle) {
     std::vector<openvdb::Vec3s> points(mesh.vertices.size());
     for (size_t i = 0; i < points.size(); ++i)
         points[i] = openvdb::Vec3s(
@@ -87,7 +90,8 @@ openvdb::FloatGrid::Ptr unsigned_band(const Mesh& mesh, const openvdb::math::Tra
     openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
     ProgressInterrupter interrupter(progress);
     openvdb::FloatGrid::Ptr grid = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
-        interrupter, adapter, transform, half_band, half_band, openvdb::tools::UNSIGNED_DISTANCE_FIELD);
+        interrupter, adapter, transform, half_band, half_band, openvdb::tools::UNSIGNED_DISTANCE_FIELD,
+        closest_triangle);
     progress.check();
     return grid;
 }
@@ -328,7 +332,8 @@ void add_off_band_winding(openvdb::FloatGrid& grid, const WindingNumber& winding
 }  // namespace
 
 openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const SignedDistanceOptions& options,
-                                                  Progress& progress, SignedDistanceStats* stats_out) {
+                                                  Progress& progress, SignedDistanceStats* stats_out,
+                                                  OrientedInput* oriented) {
     if (!(options.voxel_size > 0.0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "voxel size must be > 0");
     if (options.half_band_voxels < 2) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "half band must be >= 2 voxels");
     if (options.thicken < 0.0) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "thickness must be >= 0");
@@ -347,10 +352,11 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
     if (mesh.triangles.empty())
         throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangle with a non-zero area");
 
+    const openvdb::Int32Grid::Ptr closest_triangle = oriented ? openvdb::Int32Grid::create(-1) : nullptr;
     openvdb::FloatGrid::Ptr grid;
     {
         StageClock clock(stats, progress, "distance");
-        grid = unsigned_band(mesh, *transform, half_band, progress);
+        grid = unsigned_band(mesh, *transform, half_band, progress, closest_triangle.get());
     }
 
     std::unique_ptr<WindingNumber> winding;
@@ -391,7 +397,8 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
                                                   "(--thicken) to make it a solid sheet");
         StageClock clock(stats, progress, "thicken");
         const double half_thickness = 0.5 * options.thicken;
-        grid = unsigned_band(mesh, *transform, float(std::ceil(half_thickness / voxel)) + half_band, progress);
+        grid = unsigned_band(mesh, *transform, float(std::ceil(half_thickness / voxel)) + half_band, progress,
+                             closest_triangle.get());
         grid = rebuild_band(*grid, half_thickness, options.half_band_voxels, progress);
         stats.thickened = stats.rebuilt = true;
     } else if (band_is_consistent(*grid, voxel)) {
@@ -410,6 +417,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
     grid->setName("surface");
     stats.active_voxels = grid->activeVoxelCount();
     if (stats_out) *stats_out = stats;
+    if (oriented) *oriented = {std::move(mesh), closest_triangle};
     return grid;
 }
 

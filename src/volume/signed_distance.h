@@ -49,7 +49,20 @@ struct SignedDistanceStats {
     std::map<std::string, double> timings;
 };
 
+//! The input as the distance was taken from, for finding its closest points
+//! later without a search structure of its own.
+struct OrientedInput {
+    //! The input after orient_soup (orient_soup.h): the same surface, welded,
+    //! without degenerate or duplicate triangles.
+    Mesh mesh;
+    //! Same transform as the level set: per voxel within the unsigned band
+    //! around `mesh`, the index of the triangle of `mesh` nearest to it.
+    openvdb::Int32Grid::Ptr closest_triangle;
+};
+
+//! `oriented`, when given, receives the oriented input and its closest triangles.
 openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& mesh, const SignedDistanceOptions& options,
-                                                  Progress& progress, SignedDistanceStats* stats = nullptr);
+                                                  Progress& progress, SignedDistanceStats* stats = nullptr,
+                                                  OrientedInput* oriented = nullptr);
 
 }  // namespace fabvdb::volume

@@ -7,13 +7,11 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "volume/crossing_pairs.h"
 #include "volume/feature_targets.h"
+#include "volume/nearest_triangle.h"
 
 namespace fabvdb::volume {
 
@@ -22,9 +20,6 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Vector = Kernel::Vector_3;
-using Triangle3 = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 // The input facing the surface's way: |cos| of the angle between normals.
 constexpr double min_facing = 0.5;
@@ -58,33 +53,29 @@ size_t revert(Mesh& surface, const Mesh& original, const Triangle& t, std::vecto
 
 // Moves every vertex of the surface whose closest input point is within
 // max_distance onto it when the input there faces the surface's way.
-void move_onto_input(Mesh& surface, const Mesh& input, double max_distance, std::vector<char>& moved,
-                     Progress& progress) {
-    std::vector<Triangle3> input_triangles;
-    input_triangles.reserve(input.triangles.size());
-    for (const Triangle& t : input.triangles) {
-        Triangle3 triangle(point(input.vertices[t[0]]), point(input.vertices[t[1]]), point(input.vertices[t[2]]));
-        if (!triangle.is_degenerate()) input_triangles.push_back(triangle);
-    }
-    if (input_triangles.empty()) return;
-    Tree tree(input_triangles.begin(), input_triangles.end());
-    tree.accelerate_distance_queries();
-    progress.update(0.2);
-    progress.check();
-
+void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
+                     double max_distance, std::vector<char>& moved, Progress& progress) {
+    const NearestTriangle nearest(input, closest_triangle);
     const std::vector<Vec3> vertex_normal = area_weighted_vertex_normals(surface);
-    // The closest input point of each vertex and the unit normal there.
-    std::vector<Vec3> closest(surface.vertices.size()), input_normal(surface.vertices.size());
+    // The closest input point of each vertex and the unit normal there; a
+    // vertex with no input triangle near it is its own closest point, with a
+    // zero normal that faces nothing, so it stays.
+    std::vector<Vec3> closest(surface.vertices.size()), input_normal(surface.vertices.size(), Vec3{0, 0, 0});
     tbb::parallel_for(tbb::blocked_range<size_t>(0, surface.vertices.size(), 4096),
                       [&](const tbb::blocked_range<size_t>& range) {
                           if (progress.cancelled()) return;
+                          NearestTriangle::Query query(nearest);
                           for (size_t v = range.begin(); v != range.end(); ++v) {
-                              const auto [point_on_input, primitive] =
-                                  tree.closest_point_and_primitive(point(surface.vertices[v]));
-                              const Vector n = primitive->supporting_plane().orthogonal_vector();
-                              const Vector unit_n = n / std::sqrt(n.squared_length());
-                              closest[v] = {point_on_input.x(), point_on_input.y(), point_on_input.z()};
-                              input_normal[v] = {unit_n.x(), unit_n.y(), unit_n.z()};
+                              const Vec3& p = surface.vertices[v];
+                              const NearestTriangle::Result found = query(openvdb::Vec3d(p[0], p[1], p[2]));
+                              if (!found.found()) {
+                                  closest[v] = p;
+                                  continue;
+                              }
+                              const Vec3 n = triangle_normal(input, input.triangles[found.triangle]);
+                              const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                              closest[v] = {found.point[0], found.point[1], found.point[2]};
+                              if (length > 0.0) input_normal[v] = {n[0] / length, n[1] / length, n[2] / length};
                           }
                       });
     progress.check();
@@ -111,12 +102,13 @@ void move_onto_input(Mesh& surface, const Mesh& input, double max_distance, std:
 
 }  // namespace
 
-SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, double max_distance, Progress& progress) {
+SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
+                        double max_distance, Progress& progress) {
     progress.stage("snap");
     SnapResult result;
     const Mesh original = surface;
     std::vector<char> moved(surface.vertices.size(), 0);
-    move_onto_input(surface, input, max_distance, moved, progress);
+    move_onto_input(surface, input, closest_triangle, max_distance, moved, progress);
     progress.update(0.6);
 
     // Undo moves that flip or squash a triangle, then moves that make two

@@ -8,10 +8,15 @@
 //! (feature_targets.h), so the extraction's chamfers disappear. Moves that would
 //! make two triangles cross (crossing_pairs.h) are undone; crossings where
 //! no vertex moved, i.e. of the surface as given, are reported. Topology is
-//! unchanged. Parallel; reports progress; throws Error(CANCELLED).
+//! unchanged. Closest points are found from `closest_triangle` (per voxel
+//! near the input, its nearest input triangle: OrientedInput in
+//! signed_distance.h) by NearestTriangle (nearest_triangle.h), which needs
+//! `input` welded. Parallel; reports progress; throws Error(CANCELLED).
 #pragma once
 
 #include <cstdint>
+
+#include <openvdb/openvdb.h>
 
 #include "core/mesh.h"
 #include "core/progress.h"
@@ -24,6 +29,7 @@ struct SnapResult {
     bool self_intersecting = false;
 };
 
-SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, double max_distance, Progress& progress);
+SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
+                        double max_distance, Progress& progress);
 
 }  // namespace fabvdb::volume
