@@ -7,9 +7,11 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include <openvdb/tools/FastSweeping.h>
-#include <openvdb/tools/ValueTransformer.h>
+#include <openvdb/tree/NodeManager.h>
+#include <tbb/enumerable_thread_specific.h>
 
 #include "core/error.h"
 #include "volume/cavity_regions.h"
@@ -60,22 +62,39 @@ void validate(const HollowOptions& o) {
     if (o.infill.cell > 0.0) validate_gyroid_struts(o.infill);
 }
 
-//! A copy of `grid` with `offset` added to every value (tiles and background
-//! too), so that its `-offset` iso-surface becomes the zero one.
-openvdb::FloatGrid::Ptr shifted(const openvdb::FloatGrid& grid, float offset) {
-    openvdb::FloatGrid::Ptr copy = grid.deepCopy();
-    openvdb::tools::foreach(copy->beginValueAll(), [offset](const openvdb::FloatGrid::ValueAllIter& it) {
-        it.setValue(*it + offset);
+//! Adds `offset` to every value of `grid` (voxels, tiles and background),
+//! so that its `-offset` iso-surface becomes the zero one. Node by node, in
+//! parallel: a tree-wide iterator over all values would step through every
+//! inactive tile of the upper nodes one by one.
+void shift(openvdb::FloatGrid& grid, float offset) {
+    openvdb::tree::NodeManager<openvdb::FloatTree> nodes(grid.tree());
+    nodes.foreachTopDown([offset](auto& node) {
+        using Node = std::decay_t<decltype(node)>;
+        if constexpr (Node::LEVEL == 0) {
+            float* values = node.buffer().data();
+            for (openvdb::Index i = 0; i < Node::SIZE; ++i) values[i] += offset;
+        } else {
+            for (auto it = node.beginValueAll(); it; ++it) it.setValue(*it + offset);
+        }
     });
-    copy->tree().root().setBackground(grid.background() + offset, false);
-    return copy;
+    grid.tree().root().setBackground(grid.background() + offset, false);
 }
 
 //! The deepest value of a solid's distance band (tiles included), as a depth.
 double deepest(const openvdb::FloatGrid& grid) {
-    float lowest = 0.0f;
-    for (auto it = grid.cbeginValueAll(); it; ++it) lowest = std::min(lowest, *it);
-    return -double(lowest);
+    tbb::enumerable_thread_specific<float> lowest(0.0f);
+    openvdb::tree::NodeManager<const openvdb::FloatTree> nodes(grid.tree());
+    nodes.foreachTopDown([&lowest](const auto& node) {
+        using Node = std::decay_t<decltype(node)>;
+        float& low = lowest.local();
+        if constexpr (Node::LEVEL == 0) {
+            const float* values = node.buffer().data();
+            for (openvdb::Index i = 0; i < Node::SIZE; ++i) low = std::min(low, values[i]);
+        } else {
+            for (auto it = node.cbeginValueAll(); it; ++it) low = std::min(low, *it);
+        }
+    });
+    return -double(lowest.combine([](float a, float b) { return std::min(a, b); }));
 }
 
 //! The radius the cavity is opened by: the closing distance, at least one
@@ -175,18 +194,20 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     }
 
     // The cavity: the core at -(wall + opening), its distance rebuilt by fast
-    // sweeping, grown back by the opening.
+    // sweeping, grown back by the opening. No value that deep: no core, so
+    // no cavity (the part is nowhere thick enough for one).
     progress.stage("cavity offset");
-    openvdb::FloatGrid::Ptr cavity =
-        shifted(*openvdb::tools::sdfToSdf(*solid.distance, float(-depth)), float(-opening));
+    openvdb::FloatGrid::Ptr cavity;
+    if (thickest > depth) {
+        cavity = openvdb::tools::sdfToSdf(*solid.distance, float(-depth));
+        shift(*cavity, float(-opening));
+    }
     solid.distance.reset();
     progress.check();
     clock.lap("cavity offset");
-    if (options.infill.cell > 0.0) {
-        cavity = carve_gyroid_struts(*cavity, options.infill, progress);
-        clock.lap("infill");
-    }
-    Mesh cavity_surface = extract_mesh(*cavity, options.adaptivity, progress);
+    if (cavity && options.infill.cell > 0.0) cavity = carve_gyroid_struts(*cavity, options.infill, progress);
+    if (options.infill.cell > 0.0) clock.lap("infill");
+    Mesh cavity_surface = cavity ? extract_mesh(*cavity, options.adaptivity, progress) : Mesh{};
     cavity.reset();
     clock.lap("cavity extraction");
 

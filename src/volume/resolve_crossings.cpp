@@ -10,6 +10,7 @@
 #include "volume/resolve_crossings.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <numeric>
@@ -18,7 +19,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
@@ -115,6 +115,23 @@ std::optional<Refined> refine(const Mesh& mesh, const std::vector<std::pair<uint
     return refined;
 }
 
+//! Per vertex, its corners (triangle, corner), in triangle order: vertex
+//! v's are `corner[first[v]]` up to `corner[first[v + 1]]`.
+struct VertexCorners {
+    std::vector<uint32_t> first;
+    std::vector<std::pair<uint32_t, int>> corner;
+
+    explicit VertexCorners(const Mesh& mesh) : first(mesh.vertices.size() + 1, 0) {
+        for (const Triangle& t : mesh.triangles)
+            for (uint32_t v : t) ++first[v + 1];
+        for (size_t v = 0; v < mesh.vertices.size(); ++v) first[v + 1] += first[v];
+        corner.resize(first.back());
+        std::vector<uint32_t> filled(first.begin(), first.end() - 1);
+        for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k) corner[filled[mesh.triangles[t][k]]++] = {t, k};
+    }
+};
+
 //! The surface's patches: triangles joined across every edge but the cuts.
 struct Patches {
     std::vector<uint32_t> of_triangle;
@@ -129,13 +146,23 @@ struct Patches {
 //! patch, as at a branch point, where no winding number holds for a patch).
 std::optional<Patches> patches(const Refined& refined) {
     const auto& triangles = refined.mesh.triangles;
-    std::vector<std::pair<uint64_t, uint32_t>> directed(3 * triangles.size());
+    const VertexCorners corners(refined.mesh);
+    // For every edge k (corner k to k + 1) of every triangle, the one
+    // triangle running along it the other way; UINT32_MAX if not one.
+    std::vector<uint32_t> opposite(3 * triangles.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size()), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t t = range.begin(); t != range.end(); ++t)
-            for (int k = 0; k < 3; ++k)
-                directed[3 * t + k] = {edge_key(triangles[t][k], triangles[t][(k + 1) % 3]), uint32_t(t)};
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+                uint32_t found = UINT32_MAX;
+                int matches = 0;
+                for (uint32_t c = corners.first[b]; c != corners.first[b + 1]; ++c) {
+                    const auto [u, at] = corners.corner[c];
+                    if (triangles[u][(at + 1) % 3] == a) found = u, ++matches;
+                }
+                opposite[3 * t + k] = matches == 1 ? found : UINT32_MAX;
+            }
     });
-    tbb::parallel_sort(directed.begin(), directed.end());
     std::vector<uint32_t> parent(triangles.size());
     std::iota(parent.begin(), parent.end(), 0u);
     const auto root = [&](uint32_t t) {
@@ -145,15 +172,15 @@ std::optional<Patches> patches(const Refined& refined) {
     std::vector<std::pair<uint32_t, uint32_t>> cut_sides;  // triangles
     for (size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) {
-            const uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-            const auto opposite = std::lower_bound(directed.begin(), directed.end(), std::make_pair(edge_key(b, a), 0u));
-            if (opposite == directed.end() || opposite->first != edge_key(b, a) ||
-                (opposite + 1 != directed.end() && (opposite + 1)->first == edge_key(b, a)))
-                return std::nullopt;
-            if (!refined.cut_edges.count(edge_key(a, b)))
-                parent[root(uint32_t(t))] = root(opposite->second);
+            const uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3], other = opposite[3 * t + k];
+            if (other == UINT32_MAX) return std::nullopt;
+            // Cut edges run between pieces only: an untouched triangle's
+            // edge has a piece on its other side when it lies on a cut.
+            const bool untouched = t < refined.first_piece && other < refined.first_piece;
+            if (untouched || !refined.cut_edges.count(edge_key(a, b)))
+                parent[root(uint32_t(t))] = root(other);
             else if (a < b)
-                cut_sides.emplace_back(uint32_t(t), opposite->second);
+                cut_sides.emplace_back(uint32_t(t), other);
         }
     Patches result;
     result.of_triangle.resize(triangles.size());
@@ -347,44 +374,59 @@ std::optional<std::vector<int>> front_winding_numbers(const Mesh& mesh, const st
 //! not form closed fans (nothing is changed then).
 std::optional<std::vector<uint32_t>> part_pinches(Mesh& mesh) {
     constexpr double pinch_parting = 0.01;
-    std::vector<uint32_t> first(mesh.vertices.size() + 1, 0);
-    for (const Triangle& t : mesh.triangles)
-        for (uint32_t v : t) ++first[v + 1];
-    for (size_t v = 0; v < mesh.vertices.size(); ++v) first[v + 1] += first[v];
-    // Per vertex, its corners: (triangle, corner).
-    std::vector<std::pair<uint32_t, int>> corners(first.back());
-    std::vector<uint32_t> filled(first.begin(), first.end() - 1);
-    for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) corners[filled[mesh.triangles[t][k]]++] = {t, k};
-
-    std::vector<std::pair<uint32_t, std::vector<uint32_t>>> fans;  // vertex, its fan's triangles
-    for (uint32_t v = 0; v < mesh.vertices.size(); ++v) {
-        const auto begin = corners.begin() + first[v], end = corners.begin() + first[v + 1];
-        const auto ring = [&](const std::pair<uint32_t, int>& c, int step) {
-            return mesh.triangles[c.first][(c.second + step) % 3];
-        };
-        for (auto c = begin; c != end; ++c)
-            for (auto d = begin; d != c; ++d)
-                if (ring(*c, 1) == ring(*d, 1)) return std::nullopt;
-        std::vector<char> visited(size_t(end - begin), 0);
-        std::vector<std::vector<uint32_t>> cycles;
-        for (auto start = begin; start != end; ++start) {
-            if (visited[size_t(start - begin)]) continue;
-            std::vector<uint32_t> cycle;
-            auto at = start;
-            do {
-                visited[size_t(at - begin)] = 1;
-                cycle.push_back(at->first);
+    const VertexCorners corners(mesh);
+    // Per vertex (in parallel, without allocating for the usual single fan),
+    // its fans when it has several; whether every vertex's are closed.
+    std::atomic<bool> closed{true};
+    tbb::enumerable_thread_specific<std::vector<std::pair<uint32_t, std::vector<uint32_t>>>> local_fans;
+    tbb::enumerable_thread_specific<std::vector<char>> local_visited;
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(mesh.vertices.size())),
+                      [&](const tbb::blocked_range<uint32_t>& range) {
+        std::vector<char>& visited = local_visited.local();
+        for (uint32_t v = range.begin(); v != range.end() && closed; ++v) {
+            const auto begin = corners.corner.begin() + corners.first[v];
+            const auto end = corners.corner.begin() + corners.first[v + 1];
+            const auto ring = [&](const std::pair<uint32_t, int>& c, int step) {
+                return mesh.triangles[c.first][(c.second + step) % 3];
+            };
+            const auto next_of = [&](auto at) {
                 const uint32_t next = ring(*at, 2);
-                at = std::find_if(begin, end, [&](const auto& c) { return ring(c, 1) == next; });
-                if (at == end) return std::nullopt;
-            } while (!visited[size_t(at - begin)]);
-            if (at != start) return std::nullopt;
-            cycles.push_back(std::move(cycle));
+                return std::find_if(begin, end, [&](const auto& c) { return ring(c, 1) == next; });
+            };
+            for (auto c = begin; c != end; ++c)
+                for (auto d = begin; d != c; ++d)
+                    if (ring(*c, 1) == ring(*d, 1)) closed = false;
+            visited.assign(size_t(end - begin), 0);
+            size_t cycles = 0;
+            for (auto start = begin; start != end && closed; ++start) {
+                if (visited[size_t(start - begin)]) continue;
+                auto at = start;
+                do {
+                    visited[size_t(at - begin)] = 1;
+                    at = next_of(at);
+                    if (at == end) break;
+                } while (!visited[size_t(at - begin)]);
+                if (at != start) closed = false;
+                ++cycles;
+            }
+            if (cycles < 2 || !closed) continue;
+            visited.assign(size_t(end - begin), 0);
+            for (auto start = begin; start != end; ++start) {
+                if (visited[size_t(start - begin)]) continue;
+                std::vector<uint32_t> fan;
+                for (auto at = start; !visited[size_t(at - begin)]; at = next_of(at)) {
+                    visited[size_t(at - begin)] = 1;
+                    fan.push_back(at->first);
+                }
+                local_fans.local().emplace_back(v, std::move(fan));
+            }
         }
-        if (cycles.size() > 1)
-            for (auto& cycle : cycles) fans.emplace_back(v, std::move(cycle));
-    }
+    });
+    if (!closed) return std::nullopt;
+    std::vector<std::pair<uint32_t, std::vector<uint32_t>>> fans;  // vertex, its fan's triangles, in vertex order
+    for (auto& part : local_fans)
+        for (auto& fan : part) fans.push_back(std::move(fan));
+    std::stable_sort(fans.begin(), fans.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<uint32_t> moved;
     for (const auto& [v, fan] : fans) {
         Vec3 centre{0, 0, 0};

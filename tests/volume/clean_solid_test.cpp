@@ -2,11 +2,21 @@
 // wherever the crossing lies along the part (the self-intersection test runs
 // in slabs), open or inconsistently oriented surfaces fail. The meshes are
 // built by hand, so the expected answer is known without running any test.
+// With candidates, the crossings found are CGAL's self-intersections with a
+// candidate in them.
 #include "volume/clean_solid.h"
 
 #include <gtest/gtest.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
 #include <atomic>
+#include <functional>
+#include <random>
+#include <set>
 
 #include "core/error.h"
 #include "support/shapes.h"
@@ -44,6 +54,69 @@ TEST(CleanSolid, CrossingShellsFailWhereverTheCrossingLies) {
     }
     // Touching along a face counts as crossing too.
     EXPECT_FALSE(check_solid(test::merged(bar, test::make_box({40, 0, 10}, {42, 10, 12})), progress).clean);
+}
+
+//! CGAL's crossing pairs of `mesh` (its own broad phase and predicates) with
+//! a candidate in them, as (i, j), i < j.
+std::set<std::pair<uint32_t, uint32_t>> reference_crossings(const Mesh& mesh, const std::vector<char>& candidates) {
+    using Point = CGAL::Epick::Point_3;
+    using SurfaceMesh = CGAL::Surface_mesh<Point>;
+    SurfaceMesh surface;
+    for (const Vec3& p : mesh.vertices) surface.add_vertex(Point(p[0], p[1], p[2]));
+    for (const Triangle& t : mesh.triangles)
+        surface.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
+                         SurfaceMesh::Vertex_index(t[2]));
+    EXPECT_EQ(surface.number_of_faces(), mesh.triangles.size());
+    std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> faces;
+    CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(faces));
+    std::set<std::pair<uint32_t, uint32_t>> pairs;
+    for (const auto& [f, g] : faces)
+        if (candidates[size_t(f)] || candidates[size_t(g)]) pairs.insert(std::minmax(uint32_t(f), uint32_t(g)));
+    return pairs;
+}
+
+std::vector<char> candidates_where(const Mesh& mesh, const std::function<bool(uint32_t, const Vec3&)>& wanted) {
+    std::vector<char> candidates(mesh.triangles.size(), 0);
+    for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+        Vec3 centre{0, 0, 0};
+        for (uint32_t v : mesh.triangles[t])
+            for (int k = 0; k < 3; ++k) centre[k] += mesh.vertices[v][k] / 3.0;
+        candidates[t] = wanted(t, centre);
+    }
+    return candidates;
+}
+
+TEST(CleanSolid, CandidateCrossingsAreAllThoseWithACandidate) {
+    Progress progress;
+    // Small candidates against the large triangles of a box they cross
+    // (each large one meets many cells of the candidates' grid), and a
+    // random tenth of two crossing spheres' triangles.
+    const Mesh box_and_sphere =
+        test::merged(test::make_box({0, 0, 0}, {40, 40, 40}), test::make_sphere({20, 20, 40}, 5, 4));
+    std::mt19937 random(7);
+    const Mesh spheres = test::merged(test::make_sphere({0, 0, 0}, 10, 4), test::make_sphere({12, 3, 1}, 8, 4));
+    const struct {
+        const Mesh& mesh;
+        std::vector<char> candidates;
+        const char* what;
+    } cases[] = {
+        {box_and_sphere, candidates_where(box_and_sphere, [](uint32_t t, const Vec3& c) { return t >= 12 && c[2] > 37; }),
+         "sphere cap through the box's top"},
+        {box_and_sphere, candidates_where(box_and_sphere, [](uint32_t t, const Vec3& c) { return t >= 12 && c[2] < 38; }),
+         "sphere bottom, inside the box"},
+        {box_and_sphere, candidates_where(box_and_sphere, [](uint32_t t, const Vec3&) { return t < 12; }), "box"},
+        {spheres, candidates_where(spheres, [&](uint32_t, const Vec3&) { return random() % 10 == 0; }),
+         "random tenth of two spheres"},
+    };
+    for (const auto& [mesh, candidates, what] : cases) {
+        const SolidCheck check = check_solid(mesh, progress, candidates);
+        const std::set<std::pair<uint32_t, uint32_t>> found(check.crossings.begin(), check.crossings.end());
+        EXPECT_EQ(found.size(), check.crossings.size()) << what;
+        EXPECT_EQ(found, reference_crossings(mesh, candidates)) << what;
+    }
+    EXPECT_FALSE(reference_crossings(box_and_sphere, cases[0].candidates).empty());
+    EXPECT_TRUE(reference_crossings(box_and_sphere, cases[1].candidates).empty());
+    EXPECT_FALSE(reference_crossings(spheres, cases[3].candidates).empty());
 }
 
 TEST(CleanSolid, OpenOrMisorientedSurfacesFail) {
