@@ -171,11 +171,12 @@ int certain_sign(double x, double bound_squared) {
     return x > 0.0 ? 1 : -1;
 }
 
-// The plane of a triangle, for the side of points.
+// The plane through three points, for the side of points.
 class TrianglePlane {
 public:
-    TrianglePlane(const std::vector<Vec3>& v, const Triangle& t) : origin_(v[t[0]]) {
-        const Vec ab = minus(v[t[1]], origin_), ac = minus(v[t[2]], origin_);
+    TrianglePlane(const std::vector<Vec3>& v, const Triangle& t) : TrianglePlane(v[t[0]], v[t[1]], v[t[2]]) {}
+    TrianglePlane(const Vec3& a, const Vec3& b, const Vec3& c) : origin_(a) {
+        const Vec ab = minus(b, origin_), ac = minus(c, origin_);
         normal_ = cross_product(ab, ac);
         scale_squared_ = dot(ab, ab) * dot(ac, ac);
     }
@@ -195,6 +196,25 @@ private:
     Vec normal_;
     double scale_squared_;
 };
+
+// Whether a plane through an edge of triangle a and along its normal
+// certainly has a's third corner strictly on one side and all of b strictly
+// on the other. The plane passes through the edge's ends and a third point
+// off them (the edge's start moved along the computed normal), so the edge
+// lies on it exactly whatever the rounding of that point. Separates
+// coplanar triangles, which the planes of the triangles themselves cannot.
+bool edge_plane_separates(const std::vector<Vec3>& v, const Triangle& a, const Triangle& b) {
+    const Vec normal = cross_product(minus(v[a[1]], v[a[0]]), minus(v[a[2]], v[a[0]]));
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& start = v[a[k]];
+        const Vec3 above = {start[0] + normal[0], start[1] + normal[1], start[2] + normal[2]};
+        const TrianglePlane plane(start, v[a[(k + 1) % 3]], above);
+        const int third = plane.certain_side(v[a[(k + 2) % 3]]);
+        if (third != 0 && plane.certainly_one_side(v[b[0]], v[b[1]], v[b[2]]) && plane.certain_side(v[b[0]]) == -third)
+            return true;
+    }
+    return false;
+}
 
 // Whether segment pq certainly misses the triangle (v, a, b): both its ends
 // lie strictly on one side of the triangle's plane or, seen along its normal,
@@ -325,7 +345,8 @@ bool cross(const Mesh& mesh, const std::vector<char>& embedded, const Triangle& 
     const Kernel::Triangle_3 ta(point(a[0]), point(a[1]), point(a[2])), tb(point(b[0]), point(b[1]), point(b[2]));
     if (shared == 0) {
         if (TrianglePlane(v, a).certainly_one_side(v[b[0]], v[b[1]], v[b[2]]) ||
-            TrianglePlane(v, b).certainly_one_side(v[a[0]], v[a[1]], v[a[2]]))
+            TrianglePlane(v, b).certainly_one_side(v[a[0]], v[a[1]], v[a[2]]) || edge_plane_separates(v, a, b) ||
+            edge_plane_separates(v, b, a))
             return false;
         return CGAL::do_intersect(ta, tb);
     }

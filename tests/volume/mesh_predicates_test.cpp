@@ -148,6 +148,37 @@ TEST(CrossingPairs, LargeTrianglesMeetSmallOnes) {
     EXPECT_EQ(fast_pairs(mesh, only_large), fast);
 }
 
+TEST(CrossingPairs, CoplanarTrianglesCrossOnlyWhereTheyOverlapOrTouch) {
+    // A flat grid: its triangles two apart lie in one plane with overlapping
+    // boxes and must be told apart without crossing. Three loose triangles in
+    // the same plane: one overlapping a few grid triangles, one touching a
+    // grid vertex with a corner, one beyond the grid's corner (x + y >= 6.1,
+    // the grid <= 6) whose box overlaps the grid's.
+    Mesh mesh;
+    constexpr int n = 12;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) mesh.vertices.push_back({0.25 * i, 0.25 * j + 0.03 * (i % 3), 0.0});
+    for (uint32_t i = 0; i < n; ++i)
+        for (uint32_t j = 0; j < n; ++j) {
+            const uint32_t a = i * (n + 1) + j, b = a + n + 1;
+            mesh.triangles.push_back({a, b, b + 1});
+            mesh.triangles.push_back({a, b + 1, a + 1});
+        }
+    const auto loose = [&mesh](fabvdb::Vec3 a, fabvdb::Vec3 b, fabvdb::Vec3 c) {
+        const uint32_t first = uint32_t(mesh.vertices.size());
+        mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
+        mesh.triangles.push_back({first, first + 1, first + 2});
+    };
+    loose({1.1, 1.1, 0.0}, {1.6, 1.2, 0.0}, {1.3, 1.7, 0.0});
+    loose({-0.5, 1.0, 0.0}, {0.0, 1.0, 0.0}, {-0.5, 1.3, 0.0});
+    loose({2.8, 3.3, 0.0}, {3.3, 2.8, 0.0}, {3.3, 3.3, 0.0});
+    const auto reference = reference_pairs(mesh);
+    EXPECT_GT(reference.size(), 4u);
+    EXPECT_EQ(fast_pairs(mesh), reference);
+    const uint32_t apart = uint32_t(mesh.triangles.size() - 1);
+    for (const auto& pair : reference) EXPECT_NE(pair.second, apart);
+}
+
 TEST(CrossingPairs, FanWindingTwiceAroundItsVertexCrosses) {
     // Every triangle around the centre turns the same way seen from above, but
     // the fan goes round twice (72 degrees a step, 10 steps) at heights that
