@@ -2,6 +2,8 @@
 #include "volume/nearest_triangle.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 
 #include "volume/closest_point_on_triangle.h"
 
@@ -29,6 +31,7 @@ NearestTriangle::Query::Query(const NearestTriangle& search, bool descend)
 
 NearestTriangle::Result NearestTriangle::Query::operator()(const openvdb::Vec3d& p) {
     candidates_.clear();
+    considered_.clear();
     const openvdb::Coord center = search_.hints_.transform().worldToIndexNodeCentered(p);
     for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy)
@@ -38,6 +41,7 @@ NearestTriangle::Result NearestTriangle::Query::operator()(const openvdb::Vec3d&
                     size_t(triangle) < search_.mesh_.triangles.size())
                     candidates_.push_back(uint32_t(triangle));
             }
+    // best.distance holds the squared distance until the end.
     Result best;
     consider(p, best);
     // Descend over the triangles around the best one's corners.
@@ -50,25 +54,33 @@ NearestTriangle::Result NearestTriangle::Query::operator()(const openvdb::Vec3d&
         consider(p, best);
         if (best.triangle == before) break;
     }
+    if (best.found()) best.distance = std::sqrt(best.distance);
     return best;
 }
 
 void NearestTriangle::Query::consider(const openvdb::Vec3d& p, Result& best) {
     std::sort(candidates_.begin(), candidates_.end());
     candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
+    // Only the triangles not measured yet (the descent meets the hints again).
+    fresh_.clear();
+    std::set_difference(candidates_.begin(), candidates_.end(), considered_.begin(), considered_.end(),
+                        std::back_inserter(fresh_));
     const Mesh& mesh = search_.mesh_;
-    for (uint32_t t : candidates_) {
+    for (uint32_t t : fresh_) {
         const Triangle& tri = mesh.triangles[t];
         const openvdb::Vec3d q =
             closest_point_on_triangle(p, vec(mesh.vertices[tri[0]]), vec(mesh.vertices[tri[1]]), vec(mesh.vertices[tri[2]]))
                 .point;
-        const double distance = (p - q).length();
-        if (distance < best.distance) {
-            best.distance = distance;
+        const double squared = (p - q).lengthSqr();
+        if (squared < best.distance) {
+            best.distance = squared;
             best.point = q;
             best.triangle = t;
         }
     }
+    candidates_.clear();
+    std::merge(considered_.begin(), considered_.end(), fresh_.begin(), fresh_.end(), std::back_inserter(candidates_));
+    considered_.swap(candidates_);
 }
 
 }  // namespace fabvdb::volume

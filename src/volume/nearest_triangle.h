@@ -40,11 +40,13 @@ public:
         Result operator()(const openvdb::Vec3d& p);
 
     private:
+        //! Measures the `candidates_` not in `considered_` and adds them to
+        //! it; `best.distance` is squared here.
         void consider(const openvdb::Vec3d& p, Result& best);
         const NearestTriangle& search_;
         bool descend_;
         openvdb::tree::ValueAccessor<const openvdb::Int32Tree> hints_;
-        std::vector<uint32_t> candidates_;
+        std::vector<uint32_t> candidates_, considered_, fresh_;  //!< sorted, but candidates_ as gathered
     };
 
 private:

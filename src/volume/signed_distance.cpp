@@ -201,16 +201,29 @@ bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel) {
     tbb::parallel_for(leaves.leafRange(), [&](const auto& range) {
         auto accessor = grid.getConstAccessor();
         for (auto leaf = range.begin(); leaf && consistent; ++leaf) {
-            for (auto voxel_it = leaf->cbeginValueOn(); voxel_it; ++voxel_it) {
-                const float a = *voxel_it;
-                const openvdb::Coord ijk = voxel_it.getCoord();
+            const float* values = leaf->buffer().data();
+            const auto& active = leaf->getValueMask();
+            // Whether the voxel at local (x, y, z) + step is active, and its
+            // value: from the leaf itself when inside it.
+            const auto probe = [&](int x, int y, int z, const openvdb::Coord& step, float& value) {
+                x += step[0], y += step[1], z += step[2];
+                if ((x | y | z) >= 0 && x < leaf_dim && y < leaf_dim && z < leaf_dim) {
+                    const int offset = (x << 6) | (y << 3) | z;
+                    value = values[offset];
+                    return active.isOn(offset);
+                }
+                return accessor.probeValue(leaf->origin().offsetBy(x, y, z), value);
+            };
+            for (auto voxel_it = active.beginOn(); voxel_it; ++voxel_it) {
+                const int offset = int(voxel_it.pos()), x = offset >> 6, y = (offset >> 3) & 7, z = offset & 7;
+                const float a = values[offset];
                 bool crossing = false;
                 for (int axis = 0; axis < 3; ++axis)
-                    for (int step : {-1, 1}) {
-                        openvdb::Coord n = ijk;
-                        n[axis] += step;
+                    for (int sign : {-1, 1}) {
+                        openvdb::Coord step(0, 0, 0);
+                        step[axis] = sign;
                         float b;
-                        if (!accessor.probeValue(n, b) || (a < 0) == (b < 0)) continue;
+                        if (!probe(x, y, z, step, b) || (a < 0) == (b < 0)) continue;
                         crossing = true;
                         if (std::abs(a) + std::abs(b) > 1.5 * voxel) consistent = false;
                     }
@@ -221,7 +234,7 @@ bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel) {
                     for (int dy = -1; dy <= 1 && !crossing; ++dy)
                         for (int dz = -1; dz <= 1 && !crossing; ++dz) {
                             float b;
-                            crossing = accessor.probeValue(ijk.offsetBy(dx, dy, dz), b) && (a < 0) != (b < 0);
+                            crossing = probe(x, y, z, openvdb::Coord(dx, dy, dz), b) && (a < 0) != (b < 0);
                         }
                 if (!crossing) consistent = false;
             }
