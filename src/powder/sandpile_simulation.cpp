@@ -307,8 +307,11 @@ SandpileResult simulate_sandpile(const openvdb::FloatGrid& solid, const std::vec
     const double cell_volume = h * h * h;
 
     SandpileResult result;
+    // Where the grains inside lie, carried from turn to turn. Voxelised in
+    // the next turn's frame a nearly full cavity may hold fewer cells than
+    // grains: a grain that finds no free cell near its place waits (still
+    // inside) and is placed again once the pile has moved and made room.
     std::vector<Eigen::Vector3d> positions;
-    size_t stuck = 0;  // grains that found no free cell when the part turned
     for (size_t turn = 0; turn < options.routine.size(); ++turn) {
         progress.update(double(turn) / double(options.routine.size()));
         const Vec3& g = options.routine[turn];
@@ -317,6 +320,7 @@ SandpileResult simulate_sandpile(const openvdb::FloatGrid& solid, const std::vec
         std::vector<char> fill;
         Frame frame(solid, drills, gravity, h, turn == 0 ? &fill : nullptr);
         std::vector<size_t> grains;
+        std::vector<Eigen::Vector3d> waiting;
         if (turn == 0) {
             auto& cells = frame.cells();
             for (size_t i = 0; i < cells.size(); ++i)
@@ -327,13 +331,21 @@ SandpileResult simulate_sandpile(const openvdb::FloatGrid& solid, const std::vec
             result.initial_volume = double(grains.size()) * cell_volume;
         } else {
             for (const Eigen::Vector3d& p : positions)
-                if (!place_grain(frame, p, grains)) ++stuck;
+                if (!place_grain(frame, p, grains)) waiting.push_back(p);
         }
         progress.check();
         settle_pile(frame, grains, tan_repose, options.slope_window, progress);
-        positions.clear();
+        while (!waiting.empty()) {
+            std::vector<Eigen::Vector3d> still;
+            for (const Eigen::Vector3d& p : waiting)
+                if (!place_grain(frame, p, grains)) still.push_back(p);
+            if (still.size() == waiting.size()) break;
+            waiting.swap(still);
+            settle_pile(frame, grains, tan_repose, options.slope_window, progress);
+        }
+        positions = std::move(waiting);
         for (size_t i : grains) positions.push_back(frame.world(i));
-        result.residual_after_turn.push_back(double(positions.size() + stuck) * cell_volume);
+        result.residual_after_turn.push_back(double(positions.size()) * cell_volume);
     }
     result.residual_volume = result.residual_after_turn.back();
     progress.update(1.0);

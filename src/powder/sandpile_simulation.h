@@ -13,8 +13,11 @@
 //! staircase drawn at exactly the angle stays; the ground seen ahead falls
 //! away at most one cell per step, so a pit or cliff a few cells away does
 //! not pull a grain resting on flat ground). Grains that reach the outside are
-//! gone. Between turns the grains keep their world positions. Reports the
-//! powder left inside after each turn. Cancellable (Error(CANCELLED)).
+//! gone. Between turns the grains keep their world positions; a grain that
+//! finds no free cell near its place in the next turn's frame (a nearly full
+//! cavity voxelises to a few cells fewer in a turned frame) waits inside and
+//! is placed once the pile has moved. Reports the powder left inside after
+//! each turn. Cancellable (Error(CANCELLED)).
 #pragma once
 
 #include <vector>
