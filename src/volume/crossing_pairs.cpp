@@ -37,21 +37,16 @@ struct Box {
     double lo[3], hi[3];
 };
 
-struct Entry {
-    uint64_t cell;
-    uint32_t triangle;
-    bool operator<(const Entry& other) const {
-        return cell < other.cell || (cell == other.cell && triangle < other.triangle);
-    }
-};
-
-constexpr int cell_bits = 21;
-constexpr int64_t cells_per_axis = int64_t(1) << cell_bits;
 constexpr int max_levels = 40;
 
+// A triangle's place in a level: its cell key above its index, in one
+// integer, so that sorting the integers groups each cell's triangles.
 class Grids {
 public:
     explicit Grids(const std::vector<Box>& boxes) {
+        while ((uint64_t(1) << triangle_bits_) < boxes.size()) ++triangle_bits_;
+        axis_bits_ = std::min(21, (64 - triangle_bits_) / 3);
+        const int64_t cells_per_axis = int64_t(1) << axis_bits_;
         std::vector<double> extents(boxes.size(), 0.0);
         double top[3];
         for (int k = 0; k < 3; ++k) {
@@ -68,15 +63,19 @@ public:
         for (int k = 0; k < 3; ++k) span = std::max(span, top[k] - origin_[k]);
         std::vector<double> sorted = extents;
         std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-        base_ = 2.0 * sorted[sorted.size() / 2];
+        double base = 2.0 * sorted[sorted.size() / 2];
         // Cells must be few enough per axis for the key, and never empty.
-        base_ = std::max({base_, 2.0 * span / double(cells_per_axis), 1e-300});
+        base = std::max({base, 2.0 * span / double(cells_per_axis), 1e-300});
+        for (int level = 0; level < max_levels; ++level) {
+            cell_size_[level] = std::ldexp(base, level);
+            inverse_cell_size_[level] = 1.0 / cell_size_[level];
+        }
 
         level_.resize(boxes.size());
         int top_level = 0;
         for (size_t t = 0; t < boxes.size(); ++t) {
             int level = 0;
-            while (level + 1 < max_levels && std::ldexp(base_, level) < extents[t]) ++level;
+            while (level + 1 < max_levels && cell_size_[level] < extents[t]) ++level;
             level_[t] = uint8_t(level);
             top_level = std::max(top_level, level);
         }
@@ -99,8 +98,8 @@ public:
         for (size_t level = 0; level < entries_.size(); ++level) entries_[level].resize(level_size[level]);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size()), [&](const tbb::blocked_range<size_t>& range) {
             for (size_t t = range.begin(); t != range.end(); ++t) {
-                Entry* entry = &entries_[level_[t]][slot[t]];
-                for_each_cell(boxes[t], level_[t], [&](uint64_t cell) { *entry++ = {cell, uint32_t(t)}; });
+                uint64_t* entry = &entries_[level_[t]][slot[t]];
+                for_each_cell(boxes[t], level_[t], [&](uint64_t cell) { *entry++ = entry_of(cell, uint32_t(t)); });
             }
         });
         for (auto& level : entries_) tbb::parallel_sort(level.begin(), level.end());
@@ -110,23 +109,27 @@ public:
     int level(size_t t) const { return level_[t]; }
     //! The cell of its own level that holds the lowest corner of t's box.
     uint64_t low_cell(size_t t) const { return low_cell_[t]; }
-    const std::vector<Entry>& entries(int level) const { return entries_[level]; }
+    //! The level's entries, sorted: by cell, then by triangle.
+    const std::vector<uint64_t>& entries(int level) const { return entries_[level]; }
+    uint64_t entry_of(uint64_t cell, uint32_t triangle) const { return cell << triangle_bits_ | triangle; }
+    uint64_t cell(uint64_t entry) const { return entry >> triangle_bits_; }
+    uint32_t triangle(uint64_t entry) const { return uint32_t(entry & ((uint64_t(1) << triangle_bits_) - 1)); }
 
     uint64_t cell_of(const double* p, int level) const {
+        const int64_t last = (int64_t(1) << axis_bits_) - 1;
         uint64_t key = 0;
-        const double size = std::ldexp(base_, level);
         for (int k = 0; k < 3; ++k)
-            key = key << cell_bits | uint64_t(std::clamp(int64_t(std::floor((p[k] - origin_[k]) / size)), int64_t(0),
-                                                         cells_per_axis - 1));
+            key = key << axis_bits_ |
+                  uint64_t(std::clamp(int64_t(std::floor((p[k] - origin_[k]) * inverse_cell_size_[level])), int64_t(0), last));
         return key;
     }
 
     //! The cell holding the lowest corner of the common box of two boxes
     //! whose lowest corners lie in cells `a` and `b` of one level.
-    static uint64_t common_low_cell(uint64_t a, uint64_t b) {
-        const uint64_t mask = cells_per_axis - 1;
+    uint64_t common_low_cell(uint64_t a, uint64_t b) const {
+        const uint64_t mask = (uint64_t(1) << axis_bits_) - 1;
         uint64_t key = 0;
-        for (int shift = 2 * cell_bits; shift >= 0; shift -= cell_bits)
+        for (int shift = 2 * axis_bits_; shift >= 0; shift -= axis_bits_)
             key |= std::max((a >> shift) & mask, (b >> shift) & mask) << shift;
         return key;
     }
@@ -134,18 +137,21 @@ public:
     template <class Visit>
     void for_each_cell(const Box& box, int level, const Visit& visit) const {
         const uint64_t lo = cell_of(box.lo, level), hi = cell_of(box.hi, level);
-        const uint64_t mask = cells_per_axis - 1;
-        for (uint64_t x = lo >> (2 * cell_bits); x <= hi >> (2 * cell_bits); ++x)
-            for (uint64_t y = (lo >> cell_bits) & mask; y <= ((hi >> cell_bits) & mask); ++y)
-                for (uint64_t z = lo & mask; z <= (hi & mask); ++z) visit(x << (2 * cell_bits) | y << cell_bits | z);
+        const int b = axis_bits_;
+        const uint64_t mask = (uint64_t(1) << b) - 1;
+        for (uint64_t x = lo >> (2 * b); x <= hi >> (2 * b); ++x)
+            for (uint64_t y = (lo >> b) & mask; y <= ((hi >> b) & mask); ++y)
+                for (uint64_t z = lo & mask; z <= (hi & mask); ++z) visit(x << (2 * b) | y << b | z);
     }
 
 private:
+    int triangle_bits_ = 1;
+    int axis_bits_ = 21;
     double origin_[3] = {0, 0, 0};
-    double base_ = 1.0;
+    double cell_size_[max_levels], inverse_cell_size_[max_levels];
     std::vector<uint8_t> level_;
     std::vector<uint64_t> low_cell_;
-    std::vector<std::vector<Entry>> entries_;
+    std::vector<std::vector<uint64_t>> entries_;
 };
 
 bool boxes_overlap(const Box& a, const Box& b) {
@@ -384,34 +390,37 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
     // `j_low`: the cells of that level holding their boxes' lowest corners.
     const auto test = [&](uint32_t i, uint32_t j, const Box& i_box, const Box& j_box, uint64_t cell, uint64_t i_low,
                           uint64_t j_low) {
-        if (!boxes_overlap(i_box, j_box) || Grids::common_low_cell(i_low, j_low) != cell) return;
+        if (!boxes_overlap(i_box, j_box) || grids.common_low_cell(i_low, j_low) != cell) return;
         if (i == j || (!candidates.empty() && !candidates[i] && !candidates[j])) return;
         if (!cross(mesh, embedded, mesh.triangles[i], mesh.triangles[j])) return;
         found.local().emplace_back(std::min(i, j), std::max(i, j));
     };
 
     for (int level = 0; level < grids.levels(); ++level) {
-        const std::vector<Entry>& entries = grids.entries(level);
+        const std::vector<uint64_t>& entries = grids.entries(level);
         std::vector<size_t> runs;
         for (size_t e = 0; e < entries.size(); ++e)
-            if (e == 0 || entries[e].cell != entries[e - 1].cell) runs.push_back(e);
+            if (e == 0 || grids.cell(entries[e]) != grids.cell(entries[e - 1])) runs.push_back(e);
         runs.push_back(entries.size());
         tbb::parallel_for(tbb::blocked_range<size_t>(0, runs.size() - 1), [&](const tbb::blocked_range<size_t>& range) {
-            // The run's boxes and lowest cells side by side, read once.
+            // The run's triangles, boxes and lowest cells side by side, read once.
+            std::vector<uint32_t> run_triangles;
             std::vector<Box> run_boxes;
             std::vector<uint64_t> run_lows;
             for (size_t r = range.begin(); r != range.end(); ++r) {
-                const Entry* run = &entries[runs[r]];
                 const size_t size = runs[r + 1] - runs[r];
+                const uint64_t cell = grids.cell(entries[runs[r]]);
+                run_triangles.resize(size);
                 run_boxes.resize(size);
                 run_lows.resize(size);
                 for (size_t e = 0; e < size; ++e) {
-                    run_boxes[e] = boxes[run[e].triangle];
-                    run_lows[e] = grids.low_cell(run[e].triangle);
+                    run_triangles[e] = grids.triangle(entries[runs[r] + e]);
+                    run_boxes[e] = boxes[run_triangles[e]];
+                    run_lows[e] = grids.low_cell(run_triangles[e]);
                 }
                 for (size_t e = 0; e < size; ++e)
                     for (size_t f = e + 1; f < size; ++f)
-                        test(run[e].triangle, run[f].triangle, run_boxes[e], run_boxes[f], run[e].cell, run_lows[e],
+                        test(run_triangles[e], run_triangles[f], run_boxes[e], run_boxes[f], cell, run_lows[e],
                              run_lows[f]);
             }
         });
@@ -420,13 +429,14 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
         tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const tbb::blocked_range<size_t>& range) {
             for (size_t t = range.begin(); t != range.end(); ++t)
                 for (int level = grids.level(t) + 1; level < grids.levels(); ++level) {
-                    const std::vector<Entry>& entries = grids.entries(level);
+                    const std::vector<uint64_t>& entries = grids.entries(level);
                     const uint64_t t_low = grids.cell_of(boxes[t].lo, level);
                     grids.for_each_cell(boxes[t], level, [&](uint64_t cell) {
-                        auto it = std::lower_bound(entries.begin(), entries.end(), Entry{cell, 0});
-                        for (; it != entries.end() && it->cell == cell; ++it)
-                            test(uint32_t(t), it->triangle, boxes[t], boxes[it->triangle], cell, t_low,
-                                 grids.low_cell(it->triangle));
+                        auto it = std::lower_bound(entries.begin(), entries.end(), grids.entry_of(cell, 0));
+                        for (; it != entries.end() && grids.cell(*it) == cell; ++it) {
+                            const uint32_t other = grids.triangle(*it);
+                            test(uint32_t(t), other, boxes[t], boxes[other], cell, t_low, grids.low_cell(other));
+                        }
                     });
                 }
         });
