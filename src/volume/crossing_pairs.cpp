@@ -442,6 +442,7 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
         });
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (const auto& local : found) pairs.insert(pairs.end(), local.begin(), local.end());
+    std::sort(pairs.begin(), pairs.end());
     return pairs;
 }
 

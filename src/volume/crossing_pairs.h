@@ -16,7 +16,7 @@
 
 namespace fabvdb::volume {
 
-//! The crossing pairs (i, j), i < j, in no particular order. `candidates`:
+//! The crossing pairs (i, j), i < j, sorted (the same on every run). `candidates`:
 //! per triangle, whether pairs with it are tested; empty: all are.
 std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, const std::vector<char>& candidates = {});
 
