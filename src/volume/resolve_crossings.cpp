@@ -14,6 +14,7 @@
 #include <cmath>
 #include <exception>
 #include <numeric>
+#include <tuple>
 #include <unordered_set>
 
 #include <tbb/blocked_range.h>
@@ -85,17 +86,32 @@ std::optional<Refined> refine(const Mesh& mesh, const std::vector<std::pair<uint
     }
 
     // The first vertices are the input's, in order; the cut points follow.
-    std::vector<uint32_t> index(part.number_of_vertices() + part.number_of_removed_vertices(), UINT32_MAX);
-    for (SurfaceMesh::Vertex_index v : part.vertices()) {
+    // The autorefinement orders the cut points, the pieces and their corners
+    // differently from run to run: they are put in order of position (the
+    // cut points, each piece from its least corner, the pieces), so that the
+    // result is the same every run.
+    const auto position = [&](SurfaceMesh::Vertex_index v) {
         const Point& p = part.point(v);
+        return Vec3{p.x(), p.y(), p.z()};
+    };
+    std::vector<uint32_t> index(part.number_of_vertices() + part.number_of_removed_vertices(), UINT32_MAX);
+    std::vector<SurfaceMesh::Vertex_index> cut_points;
+    for (SurfaceMesh::Vertex_index v : part.vertices()) {
         if (size_t(v) < global.size()) {
             index[v] = global[v];
-            if (p != point(mesh.vertices[global[v]])) return std::nullopt;
+            if (position(v) != mesh.vertices[global[v]]) return std::nullopt;
         } else {
-            index[v] = uint32_t(refined.mesh.vertices.size());
-            refined.mesh.vertices.push_back({p.x(), p.y(), p.z()});
+            cut_points.push_back(v);
         }
     }
+    std::sort(cut_points.begin(), cut_points.end(),
+              [&](SurfaceMesh::Vertex_index a, SurfaceMesh::Vertex_index b) { return position(a) < position(b); });
+    for (SurfaceMesh::Vertex_index v : cut_points) {
+        index[v] = uint32_t(refined.mesh.vertices.size());
+        refined.mesh.vertices.push_back(position(v));
+    }
+    const std::vector<Vec3>& at = refined.mesh.vertices;
+    std::vector<Triangle> pieces;
     for (SurfaceMesh::Face_index f : part.faces()) {
         Triangle t;
         int k = 0;
@@ -104,8 +120,14 @@ std::optional<Refined> refine(const Mesh& mesh, const std::vector<std::pair<uint
             t[k++] = index[v];
         }
         if (k != 3) return std::nullopt;
-        refined.mesh.triangles.push_back(t);
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end(), [&](uint32_t a, uint32_t b) { return at[a] < at[b]; }),
+                    t.end());
+        pieces.push_back(t);
     }
+    std::sort(pieces.begin(), pieces.end(), [&](const Triangle& a, const Triangle& b) {
+        return std::tie(at[a[0]], at[a[1]], at[a[2]]) < std::tie(at[b[0]], at[b[1]], at[b[2]]);
+    });
+    refined.mesh.triangles.insert(refined.mesh.triangles.end(), pieces.begin(), pieces.end());
     for (SurfaceMesh::Edge_index e : part.edges())
         if (cut[e]) {
             const uint32_t a = index[part.source(part.halfedge(e))], b = index[part.target(part.halfedge(e))];
