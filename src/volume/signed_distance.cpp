@@ -144,6 +144,7 @@ void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& windi
         return i;
     };
     const auto& active = leaf.getValueMask();
+    const float* values = leaf.buffer().data();
     for (auto it = active.beginOn(); it; ++it) group[it.pos()] = int16_t(it.pos());
     for (auto it = active.beginOn(); it; ++it) {
         const int offset = int(it.pos());
@@ -152,9 +153,11 @@ void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& windi
             const openvdb::Coord q = p.offsetBy(forward[s][0], forward[s][1], forward[s][2]);
             if (q[0] >= leaf_dim || q[1] < 0 || q[1] >= leaf_dim || q[2] < 0 || q[2] >= leaf_dim) continue;
             const int neighbour = (q[0] << 6) | (q[1] << 3) | q[2];
-            if (!active.isOn(neighbour)) continue;
-            if (double(leaf.getValue(offset)) + double(leaf.getValue(neighbour)) > link_length[s] * (1.0 + 1e-3))
-                group[root(neighbour)] = int16_t(root(offset));
+            if (!active.isOn(neighbour) ||
+                double(values[offset]) + double(values[neighbour]) <= link_length[s] * (1.0 + 1e-3))
+                continue;
+            const int a = root(offset), b = root(neighbour);
+            if (a != b) group[b] = int16_t(a);
         }
     }
     // Per group root: its farthest voxel and, for a large group, the farthest
@@ -163,7 +166,7 @@ void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& windi
     int16_t farthest[leaf_size], second[leaf_size], size[leaf_size] = {};
     for (auto it = active.beginOn(); it; ++it) {
         const int r = root(int(it.pos()));
-        if (size[r]++ == 0 || leaf.getValue(it.pos()) > leaf.getValue(farthest[r])) farthest[r] = int16_t(it.pos());
+        if (size[r]++ == 0 || values[it.pos()] > values[farthest[r]]) farthest[r] = int16_t(it.pos());
         second[r] = -1;
     }
     for (auto it = active.beginOn(); it; ++it) {
@@ -171,7 +174,7 @@ void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& windi
         if (size[r] < large_group) continue;
         const openvdb::Coord d = position(int(it.pos())) - position(farthest[r]);
         if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < apart_squared) continue;
-        if (second[r] < 0 || leaf.getValue(it.pos()) > leaf.getValue(second[r])) second[r] = int16_t(it.pos());
+        if (second[r] < 0 || values[it.pos()] > values[second[r]]) second[r] = int16_t(it.pos());
     }
     const auto evaluate = [&](int offset) {
         return float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
