@@ -5,7 +5,6 @@
 #include <cmath>
 #include <iterator>
 
-#include "volume/closest_point_on_triangle.h"
 
 namespace fabvdb::volume {
 
@@ -33,19 +32,25 @@ NearestTriangle::Result NearestTriangle::Query::operator()(const openvdb::Vec3d&
     candidates_.clear();
     considered_.clear();
     const openvdb::Coord center = search_.hints_.transform().worldToIndexNodeCentered(p);
+    // Neighbouring voxels mostly share their hint: keep each once.
+    const auto add = [&](openvdb::Int32 triangle) {
+        if (triangle >= 0 && size_t(triangle) < search_.mesh_.triangles.size() &&
+            std::find(candidates_.begin(), candidates_.end(), uint32_t(triangle)) == candidates_.end())
+            candidates_.push_back(uint32_t(triangle));
+    };
     for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy)
             for (int dz = -1; dz <= 1; ++dz) {
                 openvdb::Int32 triangle;
-                if (hints_.probeValue(center.offsetBy(dx, dy, dz), triangle) && triangle >= 0 &&
-                    size_t(triangle) < search_.mesh_.triangles.size())
-                    candidates_.push_back(uint32_t(triangle));
+                if (hints_.probeValue(center.offsetBy(dx, dy, dz), triangle)) add(triangle);
             }
     // best.distance holds the squared distance until the end.
     Result best;
     consider(p, best);
-    // Descend over the triangles around the best one's corners.
-    for (int step = 0; descend_ && step < 8 && best.found(); ++step) {
+    // Descend over the triangles around the best one's corners while its
+    // nearest point lies on an edge or a corner: a triangle beyond that
+    // boundary may be nearer.
+    for (int step = 0; descend_ && step < 8 && best.found() && best.feature != TriangleFeature::face; ++step) {
         const uint32_t before = best.triangle;
         candidates_.clear();
         for (uint32_t v : search_.mesh_.triangles[before])
@@ -68,13 +73,13 @@ void NearestTriangle::Query::consider(const openvdb::Vec3d& p, Result& best) {
     const Mesh& mesh = search_.mesh_;
     for (uint32_t t : fresh_) {
         const Triangle& tri = mesh.triangles[t];
-        const openvdb::Vec3d q =
-            closest_point_on_triangle(p, vec(mesh.vertices[tri[0]]), vec(mesh.vertices[tri[1]]), vec(mesh.vertices[tri[2]]))
-                .point;
-        const double squared = (p - q).lengthSqr();
+        const TrianglePoint nearest =
+            closest_point_on_triangle(p, vec(mesh.vertices[tri[0]]), vec(mesh.vertices[tri[1]]), vec(mesh.vertices[tri[2]]));
+        const double squared = (p - nearest.point).lengthSqr();
         if (squared < best.distance) {
             best.distance = squared;
-            best.point = q;
+            best.point = nearest.point;
+            best.feature = nearest.feature;
             best.triangle = t;
         }
     }

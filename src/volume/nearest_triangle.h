@@ -1,11 +1,13 @@
 //! The triangle of a mesh nearest to a point, and the point on it, found
 //! from hints: the nearest triangles an index grid records in the 27 voxels
-//! around the point (as a mesh-to-volume conversion leaves them), then a
-//! descent over the triangles around the best one's corners for as long as it
-//! gets nearer. Exact when the true nearest triangle is among the hints or
-//! reachable by that descent (the hints of a point's own voxels are the
-//! nearest triangles a voxel away, so it is in practice); a point with no hint
-//! around it has none.
+//! around the point (as a mesh-to-volume conversion leaves them), then, while
+//! the best one's nearest point lies on its edge or corner, a descent over the
+//! triangles around its corners for as long as it gets nearer. Exact when the
+//! true nearest triangle is among the hints or reachable by that descent (the
+//! hints of a point's own voxels are the nearest triangles a voxel away, so it
+//! is in practice: on the surfaces repair extracts from bunny and fandisk at
+//! 0.2 mm, a descent from face points as well would change 5 of 869k and 1 of
+//! 641k answers); a point with no hint around it has none.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +17,7 @@
 #include <openvdb/openvdb.h>
 
 #include "core/mesh.h"
+#include "volume/closest_point_on_triangle.h"
 
 namespace fabvdb::volume {
 
@@ -23,6 +26,7 @@ public:
     struct Result {
         openvdb::Vec3d point;
         uint32_t triangle = 0;
+        TriangleFeature feature = TriangleFeature::face;  //!< where `point` lies on the triangle
         double distance = std::numeric_limits<double>::infinity();
         bool found() const { return distance < std::numeric_limits<double>::infinity(); }
     };
