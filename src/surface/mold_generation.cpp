@@ -131,6 +131,7 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     std::vector<openvdb::FloatGrid::Ptr> made(model.parts.size());
     volume::SweepOptions sweep_options;
     sweep_options.memory_budget_bytes = options.memory_budget_bytes;
+    sweep_options.kept_surface = input_grid.get();
     for (size_t p = 0; p < model.parts.size(); ++p) {
         std::vector<openvdb::FloatGrid::ConstPtr> keep_out;
         for (size_t q = 0; q < model.parts.size(); ++q)

@@ -19,6 +19,7 @@
 #include "volume/aligned_frame.h"
 #include "volume/progress_interrupter.h"
 #include "volume/require_level_set.h"
+#include "volume/trim_deep_fills.h"
 
 namespace fabvdb::volume {
 
@@ -81,6 +82,7 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
         if (!solid) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "a keep-out solid is null");
         require_level_set(*solid, "a keep-out solid");
     }
+    if (options.kept_surface) require_level_set(*options.kept_surface, "the input surface");
     const double voxel = part.voxelSize()[0];
     const float background = part.background();
     const openvdb::math::Transform::Ptr transform = aligned_transform(voxel, direction);
@@ -95,7 +97,8 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
     progress.stage("sweep: columns");
     openvdb::CoordBBox box = aligned->evalActiveVoxelBoundingBox();
     box.expand(1);
-    const uint64_t dense_bytes = uint64_t(box.volume()) * sizeof(float);
+    // With an input surface to keep, the block is held twice (before and after the sweep).
+    const uint64_t dense_bytes = uint64_t(box.volume()) * sizeof(float) * (options.kept_surface ? 2 : 1);
     if (options.memory_budget_bytes && dense_bytes > options.memory_budget_bytes)
         throw Error(FABVDB_ERR_OUT_OF_BUDGET, "sweeping the part needs " + std::to_string(dense_bytes >> 20) +
                                                   " MiB of column buffer, over the memory budget");
@@ -104,8 +107,14 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
         openvdb::tools::Dense<float> dense(box);
         openvdb::tools::copyToDense(*aligned, dense);
         progress.update(0.3);
+        std::vector<float> original;
+        if (options.kept_surface) original.assign(dense.data(), dense.data() + dense.valueCount());
         sweep_columns(dense, progress);
         progress.update(0.6);
+        if (options.kept_surface) {
+            figures.columns_trimmed = trim_deep_fills(original, dense, *transform, *options.kept_surface, background,
+                                                      2.0 * voxel, progress);
+        }
         swept = openvdb::FloatGrid::create(background);
         swept->setTransform(transform);
         openvdb::tools::copyFromDense(dense, *swept, 0.0f);

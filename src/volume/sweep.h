@@ -3,10 +3,12 @@
 //! −d), i.e. every line parallel to d meets it in one interval, the hull of
 //! where it met P. Takes a level set and d; resamples it into a frame whose
 //! index z axis is d, takes the running minimum of φ up and down each column,
-//! keeps the larger (the intersection), rebuilds the narrow band, and removes
-//! the volume of the `keep_out` solids (the other parts) so nothing is added
-//! inside them. Returns a level set on the d-aligned transform (same voxel
-//! size, same world space). Cancellable; refuses over the memory budget.
+//! keeps the larger (the intersection); given the input surface, trims
+//! instead of filling where a fill would bury it deep (trim_deep_fills.h);
+//! rebuilds the narrow band, and removes the volume of the `keep_out` solids
+//! (the other parts) so nothing is added inside them. Returns a level set on
+//! the d-aligned transform (same voxel size, same world space). Cancellable;
+//! refuses over the memory budget.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +24,10 @@ namespace fabvdb::volume {
 struct SweepOptions {
     //! Refuse (Error(OUT_OF_BUDGET)) when the dense column buffer would exceed this; 0: no limit.
     uint64_t memory_budget_bytes = 0;
+    //! Level set of the input surface: where filling would bury it deeper
+    //! than two voxels, columns are trimmed instead (trim_deep_fills.h).
+    //! nullptr: every gap is filled.
+    const openvdb::FloatGrid* kept_surface = nullptr;
 };
 
 //! Volumes in mm³, measured on the level sets.
@@ -31,6 +37,7 @@ struct SweepStats {
     double volume_after = 0;   //!< the result
     double added_volume = 0;   //!< volume_after − volume_before
     double removed_by_keep_out = 0;
+    size_t columns_trimmed = 0;  //!< columns that kept one run instead of being filled
 };
 
 //! `part`: a level set (GRID_LEVEL_SET, uniform voxels). `direction`: d, any

@@ -6,11 +6,21 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <openvdb/tools/Composite.h>
 
 #include "core/error.h"
 #include "support/plain_level_set.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
+#include "volume/double_height_field_mesh.h"
 #include "volume/extract_mesh.h"
 #include "volume/sweep.h"
 
@@ -108,6 +118,109 @@ TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
     // Outside the block, the hole is still filled.
     EXPECT_TRUE(caster.inside({6.0, 0.1, 0.0}));
     EXPECT_GT(stats.removed_by_keep_out, 0.8 * 8 * 4 * 8);
+}
+
+// A block with a slot cut into its side, under the top: every column over the
+// slot meets the block twice, so the sweep fills the slot and buries its
+// surface up to the slot's depth. Given the input surface, the columns near
+// the mouth are trimmed instead: the input surface (sampled on the block's
+// and the slot's faces) then lies much nearer the part's surface (CGAL
+// distances), the part is still a double height field (ray casting) and lies
+// within the filled one.
+TEST(SweepTrim, SlotUnderTheTopIsHalfTrimmedHalfFilled) {
+    openvdb::initialize();
+    const double voxel = 0.5;
+    const Vec3 lo{-6, -10, 8}, hi{20, 10, 30};
+    const double slot_back = 16.5, slot_y = 5, slot_floor = 18, slot_ceiling = 20;
+    openvdb::FloatGrid::Ptr input = plain_level_set(fabvdb::test::make_box(lo, hi), voxel);
+    openvdb::tools::csgDifference(
+        *input, *plain_level_set(fabvdb::test::make_box({slot_back, -slot_y, slot_floor}, {hi[0] + 1, slot_y, slot_ceiling}),
+                                 voxel));
+    const Vec3 d{0, 0, 1};
+    fabvdb::Progress progress;
+    fabvdb::volume::SweepStats filled_stats, trimmed_stats;
+    const auto filled_grid = fabvdb::volume::sweep_double_height_field(*input, d, {}, {}, progress, &filled_stats);
+    fabvdb::volume::SweepOptions trimming;
+    trimming.kept_surface = input.get();
+    const auto trimmed_grid = fabvdb::volume::sweep_double_height_field(*input, d, {}, trimming, progress, &trimmed_stats);
+    const Mesh filled = fabvdb::volume::double_height_field_mesh(*filled_grid, progress, input.get());
+    const Mesh trimmed = fabvdb::volume::double_height_field_mesh(*trimmed_grid, progress, input.get());
+    EXPECT_EQ(filled_stats.columns_trimmed, 0u);
+    EXPECT_GT(trimmed_stats.columns_trimmed, 0u);
+
+    // The input surface, sampled every 0.25 mm on each face.
+    std::vector<Vec3> samples;
+    const auto face = [&](int axis, double at, double u0, double u1, double v0, double v1,
+                          const std::function<bool(double, double)>& skip) {
+        for (double u = u0; u <= u1 + 1e-9; u += 0.25)
+            for (double v = v0; v <= v1 + 1e-9; v += 0.25) {
+                if (skip(u, v)) continue;
+                Vec3 p;
+                p[axis] = at;
+                p[(axis + 1) % 3] = u;
+                p[(axis + 2) % 3] = v;
+                samples.push_back(p);
+            }
+    };
+    const auto none = [](double, double) { return false; };
+    const auto in_slot_yz = [&](double y, double z) {
+        return std::abs(y) < slot_y && z > slot_floor && z < slot_ceiling;
+    };
+    // Axis x: (u, v) = (y, z); axis y: (z, x); axis z: (x, y).
+    face(0, lo[0], lo[1], hi[1], lo[2], hi[2], none);
+    face(0, hi[0], lo[1], hi[1], lo[2], hi[2], in_slot_yz);
+    face(1, lo[1], lo[2], hi[2], lo[0], hi[0], none);
+    face(1, hi[1], lo[2], hi[2], lo[0], hi[0], none);
+    face(2, lo[2], lo[0], hi[0], lo[1], hi[1], none);
+    face(2, hi[2], lo[0], hi[0], lo[1], hi[1], none);
+    face(0, slot_back, -slot_y, slot_y, slot_floor, slot_ceiling, none);
+    face(1, -slot_y, slot_floor, slot_ceiling, slot_back, hi[0], none);
+    face(1, slot_y, slot_floor, slot_ceiling, slot_back, hi[0], none);
+    face(2, slot_floor, slot_back, hi[0], -slot_y, slot_y, none);
+    face(2, slot_ceiling, slot_back, hi[0], -slot_y, slot_y, none);
+
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Triangle3 = Kernel::Triangle_3;
+    using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+    const auto max_distance = [&](const Mesh& mesh) {
+        std::vector<Triangle3> triangles;
+        const auto point = [&](uint32_t v) {
+            return Kernel::Point_3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]);
+        };
+        for (const auto& t : mesh.triangles) triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
+        Tree tree(triangles.begin(), triangles.end());
+        tree.accelerate_distance_queries();
+        double worst = 0;
+        for (const Vec3& p : samples)
+            worst = std::max(worst, std::sqrt(tree.squared_distance(Kernel::Point_3(p[0], p[1], p[2]))));
+        return worst;
+    };
+    const double slot_depth = hi[0] - slot_back;
+    const double filled_max = max_distance(filled), trimmed_max = max_distance(trimmed);
+    RecordProperty("filled_max_mm", std::to_string(filled_max));
+    RecordProperty("trimmed_max_mm", std::to_string(trimmed_max));
+    // Filled, the slot's back wall is buried its depth deep; trimmed near the
+    // mouth, about half that, on both sides of the cut.
+    EXPECT_GT(filled_max, 0.85 * slot_depth);
+    EXPECT_LT(trimmed_max, 0.7 * slot_depth) << "filled " << filled_max;
+
+    ASSERT_TRUE(fabvdb::test::closed_two_manifold(trimmed));
+    const auto check = fabvdb::test::check_double_height_field(trimmed, d, 80);
+    EXPECT_GT(check.lines, 1000u);
+    EXPECT_EQ(check.lines_over_two, 0u) << "max crossings " << check.max_crossings;
+    EXPECT_EQ(check.odd_lines, 0u);
+    // Trimming only takes away from the filled part.
+    fabvdb::test::LineCaster in_filled(filled, {0.31, 0.17, 0.93}), in_trimmed(trimmed, {0.29, -0.13, 0.95});
+    size_t inside_trimmed = 0;
+    for (double x = lo[0] + 0.13; x < hi[0]; x += 0.7)
+        for (double y = lo[1] + 0.11; y < hi[1]; y += 0.7)
+            for (double z = lo[2] + 0.17; z < hi[2]; z += 0.7) {
+                if (!in_trimmed.inside({x, y, z})) continue;
+                ++inside_trimmed;
+                EXPECT_TRUE(in_filled.inside({x, y, z})) << x << " " << y << " " << z;
+            }
+    EXPECT_GT(inside_trimmed, 1000u);
 }
 
 TEST(SweepErrors, RejectsZeroDirectionAndFogVolumes) {
