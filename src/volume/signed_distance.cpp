@@ -9,10 +9,12 @@
 //! 4. If the signed band is a consistent distance field (every sign change
 //!    between neighbours is a surface crossing, no surface voxel without one)
 //!    the interior is flood-filled and we are done. Otherwise (holes wider
-//!    than the band, interior or overlapping triangles) the winding number is
-//!    also sampled off the band — every voxel of band leaves, and the leaf-
-//!    sized blocks of the bounding box, voxel by voxel where w crosses 1/2 —
-//!    and the band is rebuilt from the zero surface of the combined field.
+//!    than the band, interior or overlapping triangles, parts thinner than a
+//!    voxel) the band is rebuilt from the zero surface of the field, off the
+//!    band flood-filled for a closed-cycle input; for any other the winding
+//!    number is sampled off the band first — every voxel of band leaves, and
+//!    the leaf-sized blocks of the bounding box, voxel by voxel where w
+//!    crosses 1/2 — so that it closes the holes.
 #include "volume/signed_distance.h"
 
 #include <atomic>
@@ -198,7 +200,9 @@ void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& windi
 // sign change between face neighbours is a crossing (|a| + |b| <= ~h) and
 // every voxel within h/2 of a triangle has a neighbour across it (else the
 // triangle lies inside the solid: an overlapping shell or an inner fin).
-bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel) {
+// For a closed-cycle input, an outside voxel near a triangle without one is
+// beside a part thinner than a voxel: its distance to that part is true.
+bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel, bool closed_cycle) {
     std::atomic<bool> consistent{true};
     openvdb::tree::LeafManager<const openvdb::FloatTree> leaves(grid.tree());
     tbb::parallel_for(leaves.leafRange(), [&](const auto& range) {
@@ -230,7 +234,7 @@ bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel) {
                         crossing = true;
                         if (std::abs(a) + std::abs(b) > 1.5 * voxel) consistent = false;
                     }
-                if (crossing || std::abs(a) >= 0.5 * voxel) continue;
+                if (crossing || std::abs(a) >= 0.5 * voxel || (closed_cycle && a > 0)) continue;
                 // Near a sharp edge or a thin part the surface may pass a voxel
                 // diagonally: a crossing to any of the 26 neighbours will do.
                 for (int dx = -1; dx <= 1 && !crossing; ++dx)
@@ -383,12 +387,12 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
 
     std::vector<float> band_winding;
     std::atomic<uint64_t> clearly_inside_voxels{0};
+    const bool closed = is_closed_cycle(mesh);
     {
         StageClock clock(stats, progress, "winding number");
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
         band_winding.assign(leaves.leafCount() * size_t(leaf_size), 0.0f);
         const float smallest_distance = float(1e-6 * voxel);
-        const bool closed = is_closed_cycle(mesh);
         for_each_index(leaves.leafCount(), progress, [&](size_t i) {
             uint64_t inside = 0;
             float* leaf_winding = &band_winding[i * leaf_size];
@@ -417,12 +421,18 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
                              closest_triangle.get());
         grid = rebuild_band(*grid, half_thickness, options.half_band_voxels, progress);
         stats.thickened = stats.rebuilt = true;
-    } else if (band_is_consistent(*grid, voxel)) {
+    } else if (band_is_consistent(*grid, voxel, closed)) {
         StageClock clock(stats, progress, "flood fill");
         openvdb::tools::signedFloodFill(grid->tree());
     } else {
         StageClock clock(stats, progress, "rebuild");
-        add_off_band_winding(*grid, *winding, bounding_box(mesh), band_winding, progress);
+        // A closed-cycle input has no hole for the winding number to close
+        // off the band: every region off it borders band voxels of its own
+        // side, so a flood fill signs it.
+        if (closed)
+            openvdb::tools::signedFloodFill(grid->tree());
+        else
+            add_off_band_winding(*grid, *winding, bounding_box(mesh), band_winding, progress);
         band_winding = {};
         progress.stage("rebuild");
         grid = rebuild_band(*grid, 0.0, options.half_band_voxels, progress);

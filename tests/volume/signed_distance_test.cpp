@@ -99,6 +99,23 @@ TEST(SignedDistance, OverlappingShellsUnite) {
                    0.3);  // the rebuilt band rounds sharp edges by about a voxel
 }
 
+TEST(SignedDistance, PlateThinnerThanAVoxelKeepsItsTrueDistance) {
+    // A closed plate 0.2 voxel thick between two layers of voxel centres,
+    // beside a box: no voxel lies inside the plate, so its band has no sign
+    // change, yet its distances are true and the band is kept as it is.
+    const Vec3 plate_lo = {12, 0, 5.05}, plate_hi = {16, 10, 5.1};
+    const Mesh both = fabvdb::test::merged(fabvdb::test::make_box({0, 0, 0}, {10, 10, 10}),
+                                           fabvdb::test::make_box(plate_lo, plate_hi));
+    volume::SignedDistanceStats stats;
+    auto grid = distance(both, 0.25, &stats);
+    EXPECT_FALSE(stats.rebuilt);
+    expect_matches(*grid, {-2, -2, -2}, {18, 12, 12},
+                   [&](const Vec3& p) {
+                       return std::min(box_distance(p, {0, 0, 0}, {10, 10, 10}), box_distance(p, plate_lo, plate_hi));
+                   },
+                   0.1);
+}
+
 TEST(SignedDistance, OpenBoxIsClosedAcrossItsHole) {
     const Mesh box = fabvdb::test::make_box({0, 0, 0}, {10, 10, 10});
     Mesh open;
