@@ -367,20 +367,103 @@ bool cross(const Mesh& mesh, const std::vector<char>& embedded, const Triangle& 
            (!a_edge_misses && CGAL::do_intersect(tb, Kernel::Segment_3(point(a1), point(a2))));
 }
 
-}  // namespace
+Box box_of(const Mesh& mesh, const Triangle& t) {
+    Box box;
+    for (int k = 0; k < 3; ++k) {
+        const double a = mesh.vertices[t[0]][k], b = mesh.vertices[t[1]][k], c = mesh.vertices[t[2]][k];
+        box.lo[k] = std::min({a, b, c});
+        box.hi[k] = std::max({a, b, c});
+    }
+    return box;
+}
 
-std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, const std::vector<char>& candidates) {
+// The triangles, in index order, whose bounding box meets a candidate's:
+// only they can be in a crossing pair with a candidate. The candidates'
+// boxes go into cubic cells as wide as the widest of them (so each meets at
+// most 8); a triangle looks in the cells its own box meets. Two boxes that
+// share a point share that point's cell: the cell index floor((x − origin)
+// / side) never decreases with x, rounding included. A triangle meeting
+// more than `max_cells` cells is compared with every candidate instead.
+std::vector<uint32_t> near_candidates(const Mesh& mesh, const std::vector<char>& candidates) {
+    constexpr int64_t max_cells = 64;
+    constexpr int cell_bits = 21;
+    std::vector<uint32_t> listed;
+    for (size_t t = 0; t < candidates.size(); ++t)
+        if (candidates[t]) listed.push_back(uint32_t(t));
+    if (listed.empty()) return {};
+    std::vector<Box> boxes;
+    boxes.reserve(listed.size());
+    double origin[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, top[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, side = 0.0;
+    for (uint32_t t : listed) {
+        const Box& box = boxes.emplace_back(box_of(mesh, mesh.triangles[t]));
+        for (int k = 0; k < 3; ++k) {
+            origin[k] = std::min(origin[k], box.lo[k]);
+            top[k] = std::max(top[k], box.hi[k]);
+            side = std::max(side, box.hi[k] - box.lo[k]);
+        }
+    }
+    for (int k = 0; k < 3; ++k) side = std::max(side, (top[k] - origin[k]) / double(int64_t(1) << (cell_bits - 1)));
+    side = std::max(side, 1e-300);
+    int64_t last[3];
+    const auto cell = [&](double x, int k) { return int64_t(std::floor((x - origin[k]) / side)); };
+    for (int k = 0; k < 3; ++k) last[k] = cell(top[k], k);
+    const auto key = [](int64_t x, int64_t y, int64_t z) {
+        return uint64_t(x) << (2 * cell_bits) | uint64_t(y) << cell_bits | uint64_t(z);
+    };
+    std::vector<std::pair<uint64_t, uint32_t>> cells;  // (cell, index into listed)
+    for (uint32_t c = 0; c < listed.size(); ++c) {
+        const Box& box = boxes[c];
+        for (int64_t x = cell(box.lo[0], 0); x <= cell(box.hi[0], 0); ++x)
+            for (int64_t y = cell(box.lo[1], 1); y <= cell(box.hi[1], 1); ++y)
+                for (int64_t z = cell(box.lo[2], 2); z <= cell(box.hi[2], 2); ++z) cells.emplace_back(key(x, y, z), c);
+    }
+    tbb::parallel_sort(cells.begin(), cells.end());
+
+    std::vector<char> near(mesh.triangles.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.triangles.size(), 4096),
+                      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t t = range.begin(); t != range.end(); ++t) {
+            if (candidates[t]) {
+                near[t] = 1;
+                continue;
+            }
+            const Box box = box_of(mesh, mesh.triangles[t]);
+            int64_t lo[3], hi[3], count = 1;
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::max<int64_t>(cell(box.lo[k], k), 0);
+                hi[k] = std::min(cell(box.hi[k], k), last[k]);
+                count *= std::max<int64_t>(hi[k] - lo[k] + 1, 0);
+            }
+            if (count == 0) continue;
+            if (count > max_cells) {
+                near[t] = std::any_of(boxes.begin(), boxes.end(), [&](const Box& other) { return boxes_overlap(box, other); });
+                continue;
+            }
+            for (int64_t x = lo[0]; x <= hi[0] && !near[t]; ++x)
+                for (int64_t y = lo[1]; y <= hi[1] && !near[t]; ++y)
+                    for (int64_t z = lo[2]; z <= hi[2] && !near[t]; ++z)
+                        for (auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(key(x, y, z), 0u));
+                             it != cells.end() && it->first == key(x, y, z); ++it)
+                            if (boxes_overlap(box, boxes[it->second])) {
+                                near[t] = 1;
+                                break;
+                            }
+        }
+    });
+    std::vector<uint32_t> result;
+    for (size_t t = 0; t < near.size(); ++t)
+        if (near[t]) result.push_back(uint32_t(t));
+    return result;
+}
+
+// The crossing pairs of the whole mesh with a candidate in them (all pairs
+// when `candidates` is empty), unsorted.
+std::vector<std::pair<uint32_t, uint32_t>> pairs_among(const Mesh& mesh, const std::vector<char>& candidates) {
     const size_t count = mesh.triangles.size();
     if (count < 2) return {};
     std::vector<Box> boxes(count);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const tbb::blocked_range<size_t>& range) {
-        for (size_t t = range.begin(); t != range.end(); ++t)
-            for (int k = 0; k < 3; ++k) {
-                const double a = mesh.vertices[mesh.triangles[t][0]][k], b = mesh.vertices[mesh.triangles[t][1]][k],
-                             c = mesh.vertices[mesh.triangles[t][2]][k];
-                boxes[t].lo[k] = std::min({a, b, c});
-                boxes[t].hi[k] = std::max({a, b, c});
-            }
+        for (size_t t = range.begin(); t != range.end(); ++t) boxes[t] = box_of(mesh, mesh.triangles[t]);
     });
     const Grids grids(boxes);
     const std::vector<char> embedded = embedded_fans(mesh, candidates);
@@ -442,6 +525,31 @@ std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, cons
         });
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (const auto& local : found) pairs.insert(pairs.end(), local.begin(), local.end());
+    return pairs;
+}
+
+}  // namespace
+
+// With candidates, only the triangles near them are searched: the part of
+// the mesh they make up has the same crossing pairs with a candidate (a
+// vertex whose fan is cut off there counts as not embedded, so its pairs are
+// tested exactly).
+std::vector<std::pair<uint32_t, uint32_t>> crossing_pairs(const Mesh& mesh, const std::vector<char>& candidates) {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    if (candidates.empty()) {
+        pairs = pairs_among(mesh, candidates);
+    } else {
+        const std::vector<uint32_t> near = near_candidates(mesh, candidates);
+        Mesh part{mesh.vertices, {}};
+        std::vector<char> part_candidates(near.size());
+        part.triangles.reserve(near.size());
+        for (size_t i = 0; i < near.size(); ++i) {
+            part.triangles.push_back(mesh.triangles[near[i]]);
+            part_candidates[i] = candidates[near[i]];
+        }
+        pairs = pairs_among(part, part_candidates);
+        for (auto& [i, j] : pairs) i = near[i], j = near[j];
+    }
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }

@@ -4,8 +4,10 @@
 //! the triangles intersect; one shared vertex, the edge opposite it in one
 //! meets the other; a shared edge, the two lie in one plane on the same side
 //! of it; all three shared, a duplicate. Only pairs with a candidate in them
-//! are tested. Broad phase on uniform grids, one per size class of triangle,
-//! so it stays near linear for adaptive meshes too; parallel (TBB).
+//! are tested, among the triangles whose boxes meet a candidate's, so a few
+//! candidates cost little on a large mesh. Broad phase on uniform grids, one
+//! per size class of triangle, so it stays near linear for adaptive meshes
+//! too; parallel (TBB).
 #pragma once
 
 #include <cstdint>
