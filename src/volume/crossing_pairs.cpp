@@ -26,6 +26,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
+#include "volume/vertex_corners.h"
+
 namespace fabvdb::volume {
 
 namespace {
@@ -238,19 +240,19 @@ bool segment_certainly_misses(const Vec3& v, const Vec3& a, const Vec3& b, const
             certain_sign(dot(toward_a, vq), lb * lb * la * lq) < 0);
 }
 
-// Whether the triangles around vertex `centre` (`around`, `count` of them)
-// wind once around it, seen along their summed normal, each turning the same
+// Whether the triangles around vertex `centre` (at its `corners`, `count` of
+// them; vertex_corners.h) wind once around it, seen along their summed normal, each turning the same
 // way: the link edges a -> b of the triangles (centre, a, b) chain into one
 // cycle, every turn is certainly positive, and the angular sectors (a, b] of
 // the projected triangles cover the direction of the first link vertex once
 // (the one ending there, certainly no other).
-bool fan_is_embedded(const Mesh& mesh, uint32_t centre, const uint32_t* around, size_t count) {
+bool fan_is_embedded(const Mesh& mesh, uint32_t centre, const uint32_t* corners, size_t count) {
     constexpr size_t max_fan = 64;
     if (count < 3 || count > max_fan) return false;
     uint32_t from[max_fan], to[max_fan];
     for (size_t k = 0; k < count; ++k) {
-        const Triangle& t = mesh.triangles[around[k]];
-        const int corner = t[0] == centre ? 0 : t[1] == centre ? 1 : 2;
+        const Triangle& t = mesh.triangles[corners[k] / 3];
+        const uint32_t corner = corners[k] % 3;
         from[k] = t[(corner + 1) % 3];
         to[k] = t[(corner + 2) % 3];
         if (from[k] == centre || to[k] == centre || from[k] == to[k]) return false;
@@ -293,16 +295,7 @@ bool fan_is_embedded(const Mesh& mesh, uint32_t centre, const uint32_t* around, 
 // the candidate triangles only (all when there are no candidates).
 std::vector<char> embedded_fans(const Mesh& mesh, const std::vector<char>& candidates) {
     const size_t vertex_count = mesh.vertices.size();
-    std::vector<uint32_t> first(vertex_count + 1, 0);
-    for (const Triangle& t : mesh.triangles)
-        for (uint32_t v : t) ++first[v + 1];
-    for (size_t v = 0; v < vertex_count; ++v) first[v + 1] += first[v];
-    std::vector<uint32_t> around(first[vertex_count]);
-    {
-        std::vector<uint32_t> filled(first.begin(), first.end() - 1);
-        for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-            for (uint32_t v : mesh.triangles[t]) around[filled[v]++] = t;
-    }
+    const VertexCorners corners(mesh);
     std::vector<char> wanted(vertex_count, candidates.empty());
     for (size_t t = 0; t < candidates.size(); ++t)
         if (candidates[t])
@@ -310,7 +303,8 @@ std::vector<char> embedded_fans(const Mesh& mesh, const std::vector<char>& candi
     std::vector<char> embedded(vertex_count, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_count), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t v = range.begin(); v != range.end(); ++v)
-            embedded[v] = wanted[v] && fan_is_embedded(mesh, uint32_t(v), &around[first[v]], first[v + 1] - first[v]);
+            embedded[v] = wanted[v] && fan_is_embedded(mesh, uint32_t(v), &corners.corner[corners.first[v]],
+                                                       corners.first[v + 1] - corners.first[v]);
     });
     return embedded;
 }

@@ -15,15 +15,7 @@ openvdb::Vec3d vec(const Vec3& p) { return openvdb::Vec3d(p[0], p[1], p[2]); }
 }  // namespace
 
 NearestTriangle::NearestTriangle(const Mesh& mesh, const openvdb::Int32Grid& hints)
-    : mesh_(mesh), hints_(hints), first_(mesh.vertices.size() + 1, 0) {
-    for (const Triangle& t : mesh.triangles)
-        for (uint32_t v : t) ++first_[v + 1];
-    for (size_t i = 1; i < first_.size(); ++i) first_[i] += first_[i - 1];
-    around_.resize(first_.back());
-    std::vector<uint32_t> fill(first_.begin(), first_.end() - 1);
-    for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-        for (uint32_t v : mesh.triangles[t]) around_[fill[v]++] = t;
-}
+    : mesh_(mesh), hints_(hints), corners_(mesh) {}
 
 NearestTriangle::Query::Query(const NearestTriangle& search, bool descend)
     : search_(search), descend_(descend), hints_(search.hints_.tree()) {}
@@ -54,8 +46,8 @@ NearestTriangle::Result NearestTriangle::Query::operator()(const openvdb::Vec3d&
         const uint32_t before = best.triangle;
         candidates_.clear();
         for (uint32_t v : search_.mesh_.triangles[before])
-            for (uint32_t k = search_.first_[v]; k < search_.first_[v + 1]; ++k)
-                candidates_.push_back(search_.around_[k]);
+            for (uint32_t k = search_.corners_.first[v]; k < search_.corners_.first[v + 1]; ++k)
+                candidates_.push_back(search_.corners_.corner[k] / 3);
         consider(p, best);
         if (best.triangle == before) break;
     }

@@ -18,6 +18,7 @@
 
 #include "core/mesh.h"
 #include "volume/closest_point_on_triangle.h"
+#include "volume/vertex_corners.h"
 
 namespace fabvdb::volume {
 
@@ -56,7 +57,7 @@ public:
 private:
     const Mesh& mesh_;
     const openvdb::Int32Grid& hints_;
-    std::vector<uint32_t> first_, around_;  //!< triangles around each vertex (compressed rows)
+    VertexCorners corners_;
 };
 
 }  // namespace fabvdb::volume

@@ -27,6 +27,7 @@
 
 #include "volume/clean_solid.h"
 #include "volume/mesh_shells.h"
+#include "volume/vertex_corners.h"
 
 namespace fabvdb::volume {
 
@@ -137,23 +138,6 @@ std::optional<Refined> refine(const Mesh& mesh, const std::vector<std::pair<uint
     return refined;
 }
 
-//! Per vertex, its corners (triangle, corner), in triangle order: vertex
-//! v's are `corner[first[v]]` up to `corner[first[v + 1]]`.
-struct VertexCorners {
-    std::vector<uint32_t> first;
-    std::vector<std::pair<uint32_t, int>> corner;
-
-    explicit VertexCorners(const Mesh& mesh) : first(mesh.vertices.size() + 1, 0) {
-        for (const Triangle& t : mesh.triangles)
-            for (uint32_t v : t) ++first[v + 1];
-        for (size_t v = 0; v < mesh.vertices.size(); ++v) first[v + 1] += first[v];
-        corner.resize(first.back());
-        std::vector<uint32_t> filled(first.begin(), first.end() - 1);
-        for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k) corner[filled[mesh.triangles[t][k]]++] = {t, k};
-    }
-};
-
 //! The surface's patches: triangles joined across every edge but the cuts.
 struct Patches {
     std::vector<uint32_t> of_triangle;
@@ -179,7 +163,7 @@ std::optional<Patches> patches(const Refined& refined) {
                 uint32_t found = UINT32_MAX;
                 int matches = 0;
                 for (uint32_t c = corners.first[b]; c != corners.first[b + 1]; ++c) {
-                    const auto [u, at] = corners.corner[c];
+                    const uint32_t u = corners.corner[c] / 3, at = corners.corner[c] % 3;
                     if (triangles[u][(at + 1) % 3] == a) found = u, ++matches;
                 }
                 opposite[3 * t + k] = matches == 1 ? found : UINT32_MAX;
@@ -408,9 +392,7 @@ std::optional<std::vector<uint32_t>> part_pinches(Mesh& mesh) {
         for (uint32_t v = range.begin(); v != range.end() && closed; ++v) {
             const auto begin = corners.corner.begin() + corners.first[v];
             const auto end = corners.corner.begin() + corners.first[v + 1];
-            const auto ring = [&](const std::pair<uint32_t, int>& c, int step) {
-                return mesh.triangles[c.first][(c.second + step) % 3];
-            };
+            const auto ring = [&](uint32_t c, uint32_t step) { return mesh.triangles[c / 3][(c % 3 + step) % 3]; };
             const auto next_of = [&](auto at) {
                 const uint32_t next = ring(*at, 2);
                 return std::find_if(begin, end, [&](const auto& c) { return ring(c, 1) == next; });
@@ -438,7 +420,7 @@ std::optional<std::vector<uint32_t>> part_pinches(Mesh& mesh) {
                 std::vector<uint32_t> fan;
                 for (auto at = start; !visited[size_t(at - begin)]; at = next_of(at)) {
                     visited[size_t(at - begin)] = 1;
-                    fan.push_back(at->first);
+                    fan.push_back(*at / 3);
                 }
                 local_fans.local().emplace_back(v, std::move(fan));
             }

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "volume/closest_point_on_triangle.h"
 #include "volume/nearest_triangle.h"
+#include "volume/vertex_corners.h"
 
 namespace fabvdb::volume {
 
@@ -50,27 +51,21 @@ struct Pseudonormals {
                 }
             }
         });
-        // Per vertex, its corners (3 t + k) in triangle order, so that the
-        // sums below add in that order.
-        std::vector<uint32_t> first(points.size() + 1, 0);
-        for (const Triangle& tri : mesh.triangles)
-            for (uint32_t v : tri) ++first[v + 1];
-        for (size_t v = 0; v < points.size(); ++v) first[v + 1] += first[v];
-        std::vector<uint32_t> corners(first.back());
-        std::vector<uint32_t> filled(first.begin(), first.end() - 1);
-        for (size_t t = 0; t < triangle_count; ++t)
-            for (int k = 0; k < 3; ++k) corners[filled[mesh.triangles[t][k]]++] = uint32_t(3 * t + k);
+        // Per vertex, its corners in triangle order, so that the sums below
+        // add in that order.
+        const VertexCorners corners(mesh);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()), [&](const tbb::blocked_range<size_t>& range) {
             for (size_t v = range.begin(); v != range.end(); ++v)
-                for (uint32_t c = first[v]; c != first[v + 1]; ++c) vertex[v] += corner_normal[corners[c]];
+                for (uint32_t c = corners.first[v]; c != corners.first[v + 1]; ++c)
+                    vertex[v] += corner_normal[corners.corner[c]];
         });
         tbb::parallel_for(tbb::blocked_range<size_t>(0, triangle_count), [&](const tbb::blocked_range<size_t>& range) {
             for (size_t t = range.begin(); t != range.end(); ++t)
                 for (int k = 0; k < 3; ++k) {
                     const uint32_t from = mesh.triangles[t][k], to = mesh.triangles[t][(k + 1) % 3];
                     across[3 * t + k] = uint32_t(t);
-                    for (uint32_t c = first[to]; c != first[to + 1]; ++c) {
-                        const uint32_t other = corners[c] / 3, at = corners[c] % 3;
+                    for (uint32_t c = corners.first[to]; c != corners.first[to + 1]; ++c) {
+                        const uint32_t other = corners.corner[c] / 3, at = corners.corner[c] % 3;
                         if (mesh.triangles[other][(at + 1) % 3] == from) {
                             across[3 * t + k] = other;
                             break;
