@@ -96,11 +96,12 @@ int main(int argc, char** argv) {
                         total);
             for (const auto& part : molds.parts)
                 std::printf("  part %d: restored %.0f mm3, ARAP %zu handles, moved max %.3f mean %.3f mm, "
-                            "volume change %+.1f mm3; sweep added %.0f mm3 (%.2f%%), kept out %.0f mm3; "
-                            "distance mean %.4f%% max %.3f%%\n",
+                            "volume change %+.1f mm3; handed over %.0f mm3, received %.0f mm3; sweep added %.0f mm3 "
+                            "(%.2f%%), kept out %.0f mm3, %zu columns trimmed; distance mean %.4f%% max %.3f%%\n",
                             part.id, part.restored_volume, part.deformation_handles, part.deformation_max,
-                            part.deformation_mean, part.deformed_volume_change, part.added_volume,
-                            100 * part.added_volume / part.restored_volume, part.removed_by_keep_out,
+                            part.deformation_mean, part.deformed_volume_change, part.given_volume,
+                            part.received_volume, part.added_volume, 100 * part.added_volume / part.restored_volume,
+                            part.removed_by_keep_out, part.columns_trimmed,
                             100 * part.mean_distance / molds.diagonal, 100 * part.max_distance / molds.diagonal);
             for (const auto& [stage, seconds] : molds.seconds)
                 std::printf("  mold stage %-28s %8.2f s\n", stage.c_str(), seconds);

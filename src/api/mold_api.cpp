@@ -57,6 +57,8 @@ nlohmann::json part_entry(const fabvdb::surface::CastPart& part, double diagonal
             {"added_volume", part.added_volume},
             {"added_volume_ratio", part.restored_volume > 0 ? part.added_volume / part.restored_volume : 0.0},
             {"removed_by_keep_out", part.removed_by_keep_out},
+            {"columns_trimmed", part.columns_trimmed},
+            {"handed_over", {{"given", part.given_volume}, {"received", part.received_volume}}},
             {"mean_distance_ratio", part.mean_distance / diagonal},
             {"hausdorff_ratio", part.max_distance / diagonal}};
     if (common) {

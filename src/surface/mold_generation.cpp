@@ -11,6 +11,7 @@
 #include "surface/surface_distance.h"
 #include "volume/detail_restoration.h"
 #include "volume/double_height_field_mesh.h"
+#include "volume/hand_over_runs.h"
 #include "volume/signed_distance.h"
 #include "volume/sweep.h"
 
@@ -127,30 +128,46 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     }
 
     // Parts in order; each keeps out of the parts made before it (as made)
-    // and of those still to come (as restored), so no two overlap.
-    std::vector<openvdb::FloatGrid::Ptr> made(model.parts.size());
+    // and of those still to come (as its own material), so no two overlap.
     volume::SweepOptions sweep_options;
     sweep_options.memory_budget_bytes = options.memory_budget_bytes;
     sweep_options.kept_surface = input_grid.get();
+    std::vector<volume::SweepStats> stats(model.parts.size());
+    const auto sweep_all = [&](const std::vector<openvdb::FloatGrid::Ptr>& own) {
+        std::vector<openvdb::FloatGrid::Ptr> made(model.parts.size());
+        for (size_t p = 0; p < model.parts.size(); ++p) {
+            std::vector<openvdb::FloatGrid::ConstPtr> keep_out;
+            for (size_t q = 0; q < model.parts.size(); ++q)
+                if (q != p) keep_out.push_back(q < p ? made[q] : own[q]);
+            made[p] = volume::sweep_double_height_field(*own[p], model.parts[p].direction, keep_out, sweep_options,
+                                                        progress, &stats[p]);
+        }
+        return made;
+    };
+    std::vector<openvdb::FloatGrid::Ptr> made = sweep_all(restored);
+    // Runs that other parts split off a part go to those parts, and all are
+    // swept again from the new split.
+    const volume::HandOver handed = volume::hand_over_unkept_runs(restored, made, input_grid.get(), progress);
+    if (std::any_of(handed.given.begin(), handed.given.end(), [](double v) { return v > 0; }))
+        made = sweep_all(handed.parts);
+    clock.lap("sweep");
+
     for (size_t p = 0; p < model.parts.size(); ++p) {
-        std::vector<openvdb::FloatGrid::ConstPtr> keep_out;
-        for (size_t q = 0; q < model.parts.size(); ++q)
-            if (q != p) keep_out.push_back(q < p ? made[q] : restored[q]);
-        volume::SweepStats stats;
-        made[p] = volume::sweep_double_height_field(*restored[p], model.parts[p].direction, keep_out, sweep_options,
-                                                    progress, &stats);
-        clock.lap("sweep");
         CastPart cast;
         cast.id = model.parts[p].id;
         cast.direction = model.parts[p].direction;
         cast.part = volume::double_height_field_mesh(*made[p], progress, input_grid.get());
         const OverhangDeformation& deformation = deformations[p];
         cast.deformed_volume_change = deformation.volume_after - deformation.volume_before;
-        cast.restored_volume = stats.volume_before - cast.deformed_volume_change;
+        cast.given_volume = handed.given[p];
+        cast.received_volume = handed.received[p];
+        cast.restored_volume = stats[p].volume_before - cast.deformed_volume_change - cast.received_volume +
+                               cast.given_volume;
         cast.deformation_handles = deformation.handles;
         cast.deformation_max = deformation.max_displacement;
         cast.deformation_mean = deformation.mean_displacement;
-        cast.removed_by_keep_out = stats.removed_by_keep_out;
+        cast.removed_by_keep_out = stats[p].removed_by_keep_out;
+        cast.columns_trimmed = stats[p].columns_trimmed;
         clock.lap("part surface");
         if (!options.common_mold) {
             cast.mold = assemble_mold(cast.part, cast.direction, options.mold, progress);
@@ -177,7 +194,8 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     for (CastPart& cast : result.parts) {
         cast.part = round_to_float(cast.part, "part " + std::to_string(cast.id));
         cast.volume = signed_volume(cast.part);
-        cast.added_volume = cast.volume - cast.restored_volume - cast.deformed_volume_change;
+        cast.added_volume = cast.volume - cast.restored_volume - cast.deformed_volume_change -
+                            cast.received_volume + cast.given_volume;
     }
     measure_distances(input, result, progress);
     clock.lap("distance to the input");

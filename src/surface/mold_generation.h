@@ -5,8 +5,10 @@
 //!  2. moldability enforcement: small gaps along the parting direction closed
 //!     by ARAP deformation (overhang_deformation.h), then the part swept into a double height field
 //!     along its parting direction, the added volume kept out of the other
-//!     parts (the parts already made and the restored ones still to come), and
-//!     meshed as an exact double height field (volume/sweep.h,
+//!     parts (the parts already made and the restored ones still to come);
+//!     the runs other parts split off a part are handed to those parts and
+//!     all are swept again (volume/hand_over_runs.h); each is meshed as an
+//!     exact double height field (volume/sweep.h,
 //!     volume/double_height_field_mesh.h);
 //!  3. its two-piece mold: RBF parting surface, gate, runner, sprue, vents,
 //!     registration keys, CGAL booleans (mold_assembly.h); or, with
@@ -61,8 +63,11 @@ struct CastPart {
     double deformation_max = 0;         //!< mm, the largest ARAP displacement of a surface vertex
     double deformation_mean = 0;        //!< mm, the mean over the vertices that moved
     double deformed_volume_change = 0;  //!< mm³, volume after ARAP − restored_volume
-    double added_volume = 0;      //!< volume − restored_volume − deformed_volume_change: what the sweep added
+    double given_volume = 0;      //!< mm³ of its own material handed to other parts (hand_over_runs.h)
+    double received_volume = 0;   //!< mm³ handed to it by other parts
+    double added_volume = 0;      //!< volume − restored − deformed change − received + given: what the sweep added
     double removed_by_keep_out = 0;  //!< mm³ the sweep would have added inside other parts
+    size_t columns_trimmed = 0;   //!< columns the sweep trimmed instead of filling (trim_deep_fills.h)
     double mean_distance = 0;     //!< mm, from the input vertices nearest to this part
     double max_distance = 0;
 };

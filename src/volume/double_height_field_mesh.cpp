@@ -8,9 +8,9 @@
 #include <vector>
 
 #include <openvdb/tools/Dense.h>
-#include <openvdb/tools/Interpolation.h>
 
 #include "core/error.h"
+#include "volume/column_runs.h"
 
 namespace fabvdb::volume {
 
@@ -24,53 +24,20 @@ struct Column {
     float at_minimum = 0;    //!< index z where it is smallest
 };
 
-//! Zero crossing between samples k and k + 1 (values of opposite sign).
-float crossing(const float* column, size_t k) {
-    const float a = column[k], b = column[k + 1];
-    return float(k) + a / (a - b);
-}
-
-//! An inside run of a column: samples [start, end) are inside.
-struct Run {
-    size_t start, end;
-};
-
-//! Keeps the run that crosses the kept surface most (the input surface it
-//! carries), the longer on a tie; `crossings(run)` counts those crossings.
-template <typename CountCrossings>
-Column scan_column(const float* column, size_t nz, float z0, const CountCrossings& crossings) {
+//! The column's kept run (column_runs.h) and its minimum.
+Column scan_column(const float* column, size_t nz, float z0, const SurfaceCrossings& crossings, int i, int j) {
     Column c;
-    std::vector<Run> runs;
     size_t k_min = 0;
-    for (size_t k = 0; k < nz;) {
+    for (size_t k = 1; k < nz; ++k)
         if (column[k] < column[k_min]) k_min = k;
-        if (column[k] >= 0) {
-            ++k;
-            continue;
-        }
-        const size_t start = k;
-        while (k < nz && column[k] < 0) {
-            if (column[k] < column[k_min]) k_min = k;
-            ++k;
-        }
-        runs.push_back({start, k});
-    }
     c.minimum = column[k_min];
     c.at_minimum = z0 + float(k_min);
-    const Run* best = nullptr;
-    size_t best_crossings = 0;
-    for (const Run& run : runs) {
-        const size_t run_crossings = runs.size() > 1 ? crossings(run) : 0;
-        if (!best || run_crossings > best_crossings ||
-            (run_crossings == best_crossings && run.end - run.start > best->end - best->start))
-            best = &run, best_crossings = run_crossings;
-    }
-    // The box has an outside sample at each end, so a run never touches it.
-    if (best && best->start > 0 && best->end < nz) {
-        c.inside = true;
-        c.lo = z0 + crossing(column, best->start - 1);
-        c.hi = z0 + crossing(column, best->end - 1);
-    }
+    const std::vector<Run> runs = inside_runs(column, nz);
+    if (runs.empty()) return c;
+    const Run& kept = runs[kept_run(runs, crossings, i, j)];
+    c.inside = true;
+    c.lo = z0 + float(zero_crossing(column, kept.start - 1));
+    c.hi = z0 + float(zero_crossing(column, kept.end - 1));
     return c;
 }
 
@@ -91,28 +58,11 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
         openvdb::tools::copyToDense(swept, dense);
         progress.check();
         const float* data = dense.data();
-        const openvdb::FloatGrid::ConstAccessor surface_accessor =
-            (kept_surface ? *kept_surface : swept).getConstAccessor();
         const float z0 = float(box.min().z());
-        const openvdb::math::Transform& frame = swept.transform();
+        const SurfaceCrossings crossings(swept.transform(), box.min(), kept_surface);
         for (size_t c = 0; c < columns.size(); ++c) {
-            const int i = int(c / size_t(ny)) + box.min().x(), j = int(c % size_t(ny)) + box.min().y();
-            // Sign changes of the kept surface's level set over the run and
-            // the outside samples bounding it.
-            const auto crossings = [&](const Run& run) {
-                if (!kept_surface) return size_t(0);
-                size_t count = 0;
-                bool was_inside = false;
-                for (size_t k = run.start - 1; k <= run.end; ++k) {
-                    const openvdb::Vec3d world = frame.indexToWorld(openvdb::Vec3d(i, j, z0 + float(k)));
-                    const bool inside =
-                        openvdb::tools::BoxSampler::sample(surface_accessor, kept_surface->worldToIndex(world)) < 0;
-                    if (k > run.start - 1 && inside != was_inside) ++count;
-                    was_inside = inside;
-                }
-                return count;
-            };
-            columns[c] = scan_column(data + c * nz, nz, z0, crossings);
+            const int i = int(c / size_t(ny)), j = int(c % size_t(ny));
+            columns[c] = scan_column(data + c * nz, nz, z0, crossings, i, j);
         }
     }
     progress.update(0.5);

@@ -4,7 +4,7 @@
 //! construction, which an iso-surface extractor does not promise. Each index
 //! column (i, j) gives the interval where it is inside (one inside run, the
 //! zero crossings linearly interpolated: where other parts split a column,
-//! the run that carries the most of the kept surface, else the longest); the shadow of the part is
+//! the run column_runs.h keeps); the shadow of the part is
 //! the zero contour of the column minimum (a 2D distance to the shadow), found
 //! by marching squares with separated saddles; each marching-squares polygon
 //! is fanned from an inside column and lifted twice, to the column tops

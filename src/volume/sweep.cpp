@@ -13,10 +13,10 @@
 #include <openvdb/tools/GridTransformer.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetMeasure.h>
-#include <openvdb/tools/Prune.h>
 
 #include "core/error.h"
 #include "volume/aligned_frame.h"
+#include "volume/dense_level_set.h"
 #include "volume/progress_interrupter.h"
 #include "volume/require_level_set.h"
 #include "volume/trim_deep_fills.h"
@@ -115,23 +115,8 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
             figures.columns_trimmed = trim_deep_fills(original, dense, *transform, *options.kept_surface, background,
                                                       2.0 * voxel, progress);
         }
-        swept = openvdb::FloatGrid::create(background);
-        swept->setTransform(transform);
-        openvdb::tools::copyFromDense(dense, *swept, 0.0f);
-        progress.check();
+        swept = dense_level_set(dense, *transform, background, progress);
     }
-    // The band again: values at or beyond the background become inactive
-    // inside/outside values. The column order of signs, which makes the
-    // double height field, is kept exactly (a rebuild through a mesh would
-    // move the surface by a fraction of a voxel and could break it).
-    for (auto value = swept->beginValueOn(); value; ++value)
-        if (std::abs(*value) >= background) {
-            value.setValue(*value < 0 ? -background : background);
-            value.setValueOff();
-        }
-    openvdb::tools::pruneLevelSet(swept->tree());
-    progress.check();
-    swept->setGridClass(openvdb::GRID_LEVEL_SET);
     figures.volume_swept = openvdb::tools::levelSetVolume(*swept);
 
     if (!keep_out.empty()) {

@@ -10,6 +10,7 @@
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 
+#include "volume/column_runs.h"
 #include "volume/progress_interrupter.h"
 
 namespace fabvdb::volume {
@@ -17,33 +18,6 @@ namespace fabvdb::volume {
 namespace {
 
 using Sampler = openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler>;
-
-//! An inside run of a column: samples [start, end) are inside.
-struct Run {
-    size_t start, end;
-};
-
-//! The box has an outside sample at each end of every column, so a run
-//! never touches it.
-std::vector<Run> inside_runs(const float* column, size_t nz) {
-    std::vector<Run> runs;
-    for (size_t k = 0; k < nz;) {
-        if (column[k] >= 0) {
-            ++k;
-            continue;
-        }
-        const size_t start = k;
-        while (k < nz && column[k] < 0) ++k;
-        runs.push_back({start, k});
-    }
-    return runs;
-}
-
-//! Index z of the zero crossing between samples k and k + 1.
-double crossing(const float* column, size_t k) {
-    const double a = column[k], b = column[k + 1];
-    return double(k) + a / (a - b);
-}
 
 }  // namespace
 
@@ -90,7 +64,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
             const std::vector<Run> runs = inside_runs(column, nz);
             for (size_t r = 0; r + 1 < runs.size(); ++r)
                 for (const size_t k : {runs[r].end - 1, runs[r + 1].start - 1}) {
-                    const openvdb::Vec3d p = world(c, crossing(column, k));
+                    const openvdb::Vec3d p = world(c, zero_crossing(column, k));
                     if (std::abs(surface_sampler.wsSample(p)) >= voxel) continue;
                     depth[c] = std::max(depth[c], -distance_sampler.wsSample(p));
                 }
@@ -143,7 +117,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
             for (const Run& run : runs) {
                 int ends = 0;
                 for (const size_t k : {run.start - 1, run.end - 1})
-                    ends += std::abs(surface_sampler.wsSample(world(c, crossing(column, k)))) < voxel;
+                    ends += std::abs(surface_sampler.wsSample(world(c, zero_crossing(column, k)))) < voxel;
                 if (ends > kept_ends || (ends == kept_ends && run.end - run.start > kept->end - kept->start))
                     kept = &run, kept_ends = ends;
             }
