@@ -159,14 +159,8 @@ std::optional<Patches> patches(const Refined& refined) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size()), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t t = range.begin(); t != range.end(); ++t)
             for (int k = 0; k < 3; ++k) {
-                const uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-                uint32_t found = UINT32_MAX;
-                int matches = 0;
-                for (uint32_t c = corners.first[b]; c != corners.first[b + 1]; ++c) {
-                    const uint32_t u = corners.corner[c] / 3, at = corners.corner[c] % 3;
-                    if (triangles[u][(at + 1) % 3] == a) found = u, ++matches;
-                }
-                opposite[3 * t + k] = matches == 1 ? found : UINT32_MAX;
+                const VertexCorners::Across other = corners.across(refined.mesh, uint32_t(t), k);
+                opposite[3 * t + k] = other.count == 1 ? other.first : UINT32_MAX;
             }
     });
     std::vector<uint32_t> parent(triangles.size());

@@ -62,15 +62,8 @@ struct Pseudonormals {
         tbb::parallel_for(tbb::blocked_range<size_t>(0, triangle_count), [&](const tbb::blocked_range<size_t>& range) {
             for (size_t t = range.begin(); t != range.end(); ++t)
                 for (int k = 0; k < 3; ++k) {
-                    const uint32_t from = mesh.triangles[t][k], to = mesh.triangles[t][(k + 1) % 3];
-                    across[3 * t + k] = uint32_t(t);
-                    for (uint32_t c = corners.first[to]; c != corners.first[to + 1]; ++c) {
-                        const uint32_t other = corners.corner[c] / 3, at = corners.corner[c] % 3;
-                        if (mesh.triangles[other][(at + 1) % 3] == from) {
-                            across[3 * t + k] = other;
-                            break;
-                        }
-                    }
+                    const VertexCorners::Across other = corners.across(mesh, uint32_t(t), k);
+                    across[3 * t + k] = other.count > 0 ? other.first : uint32_t(t);
                 }
         });
     }
