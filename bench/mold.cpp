@@ -5,7 +5,8 @@
 // maker checks (parts, added volume, distance ratios, triangles).
 // Usage: bench_mold [model ...] (default: bunny.off kitten.obj fertility.off)
 //        environment FABVDB_BENCH_VOXEL=mm to override the default voxel,
-//        FABVDB_BENCH_DEFORM=0 to run without the ARAP overhang deformation.
+//        FABVDB_BENCH_DEFORM=0 to run without the ARAP overhang deformation,
+//        FABVDB_BENCH_MAX_DEFORMATION=mm to bound its displacement (default one voxel).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
             fabvdb::surface::MoldGenerationOptions options;
             if (voxel) options.voxel_size = std::atof(voxel);
             if (const char* deform = std::getenv("FABVDB_BENCH_DEFORM")) options.deform_overhangs = std::atoi(deform) != 0;
+            if (const char* bound = std::getenv("FABVDB_BENCH_MAX_DEFORMATION")) options.max_deformation = std::atof(bound);
             const auto molds = fabvdb::surface::generate_molds(input, model, options, progress);
             timer.finish();
             const double total = std::chrono::duration<double>(Clock::now() - start).count();

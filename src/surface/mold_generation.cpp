@@ -115,7 +115,7 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     if (options.deform_overhangs) {
         OverhangDeformationOptions deformation_options;
         deformation_options.max_displacement =
-            options.max_deformation > 0 ? options.max_deformation : result.voxel_size;
+            options.max_deformation > 0 ? options.max_deformation : 0.5 * result.voxel_size;
         for (size_t p = 0; p < model.parts.size(); ++p) {
             std::vector<openvdb::FloatGrid::ConstPtr> others;
             for (size_t q = 0; q < model.parts.size(); ++q)
