@@ -8,12 +8,19 @@
 // - the model's ranking of random hole sets (1 to 4 holes drawn from the
 //   candidate sites, seed 7) against the simulation's: Spearman's rank
 //   correlation of predicted and simulated residuals.
-// Usage: bench_drain [--sets N] [--routines R] [model files in the shared meshes folder...]
+// --sim-cache FILE keeps each simulated residual under the exact hole set
+// (model, routines, every hole's figures in full precision) and reuses it:
+// the simulation is most of the bench's time and does not depend on the
+// model, so a change to the model is measured in seconds. Delete the file
+// when the simulation or the hollowing changes.
+// Usage: bench_drain [--sets N] [--routines R] [--sim-cache FILE] [model files in the shared meshes folder...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <map>
 #include <numeric>
 #include <random>
 #include <string>
@@ -35,8 +42,53 @@ fabvdb::Mesh scaled(fabvdb::Mesh mesh, double size) {
     return mesh;
 }
 
+//! Simulated residuals by hole set, read from and appended to a file (see --sim-cache).
+class SimulationCache {
+public:
+    explicit SimulationCache(std::string path) : path_(std::move(path)) {
+        if (path_.empty()) return;
+        std::ifstream in(path_);
+        std::string key;
+        double value;
+        while (std::getline(in, key, '\t') && in >> value && in.ignore(1)) entries_[key] = value;
+    }
+    static std::string key(const std::string& model, int routines, const std::vector<fabvdb::powder::DrainHole>& holes) {
+        std::string text = model + " " + std::to_string(routines);
+        char number[32];
+        for (const auto& hole : holes)
+            for (double v : {hole.center[0], hole.center[1], hole.center[2], hole.axis[0], hole.axis[1], hole.axis[2],
+                             hole.diameter, hole.depth}) {
+                std::snprintf(number, sizeof number, " %.17g", v);
+                text += number;
+            }
+        return text;
+    }
+    bool find(const std::string& key, double& value) const {
+        const auto found = entries_.find(key);
+        if (found == entries_.end()) return false;
+        value = found->second;
+        return true;
+    }
+    void add(const std::string& key, double value) {
+        if (path_.empty()) return;
+        entries_[key] = value;
+        std::ofstream out(path_, std::ios::app);
+        char number[32];
+        std::snprintf(number, sizeof number, "%.17g", value);
+        out << key << '\t' << number << '\n';
+    }
+
+private:
+    std::string path_;
+    std::map<std::string, double> entries_;
+};
+
 //! The mean simulated residual fraction over the routines of seeds 1 to `routines`.
-double simulate(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powder::DrainHole>& holes, int routines) {
+double simulate(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powder::DrainHole>& holes, int routines,
+                const std::string& model, SimulationCache& cache) {
+    const std::string key = SimulationCache::key(model, routines, holes);
+    double cached = 0.0;
+    if (cache.find(key, cached)) return cached;
     std::vector<fabvdb::powder::SandpileHole> drills;
     for (const auto& hole : holes) drills.push_back({hole.center, hole.axis, hole.diameter, hole.depth});
     double sum = 0.0;
@@ -48,6 +100,7 @@ double simulate(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powde
         fabvdb::Progress progress;
         sum += fabvdb::powder::simulate_sandpile(shell, drills, options, progress).residual_fraction();
     }
+    cache.add(key, sum / routines);
     return sum / routines;
 }
 
@@ -83,15 +136,19 @@ double spearman(const std::vector<double>& x, const std::vector<double>& y) {
 int main(int argc, char** argv) {
     std::vector<std::string> models;
     int set_count = 10, routines = 1;
+    std::string cache_path;
     for (int a = 1; a < argc; ++a) {
         if (std::strcmp(argv[a], "--sets") == 0 && a + 1 < argc)
             set_count = std::atoi(argv[++a]);
         else if (std::strcmp(argv[a], "--routines") == 0 && a + 1 < argc)
             routines = std::max(1, std::atoi(argv[++a]));
+        else if (std::strcmp(argv[a], "--sim-cache") == 0 && a + 1 < argc)
+            cache_path = argv[++a];
         else
             models.push_back(argv[a]);
     }
     if (models.empty()) models = {"bunny.off", "kitten.obj", "fertility.off", "armadillo_29k.obj", "airplane.obj"};
+    SimulationCache cache(cache_path);
     for (const std::string& name : models) {
         fabvdb::Progress progress;
         const fabvdb::Mesh mesh =
@@ -128,14 +185,14 @@ int main(int argc, char** argv) {
                     result.plan.candidate_count, 100 * result.plan.evaluation.residual_fraction(),
                     100 * result.plan.baseline_evaluation.residual_fraction());
         for (const auto& [stage, seconds] : result.timings) std::printf("  %-30s %.3f s\n", stage.c_str(), seconds);
-        const double optimized = simulate(*result.shell, result.plan.holes, routines);
-        const double baseline = simulate(*result.shell, result.plan.baseline, routines);
+        const double optimized = simulate(*result.shell, result.plan.holes, routines, name, cache);
+        const double baseline = simulate(*result.shell, result.plan.baseline, routines, name, cache);
         std::printf("  simulated residual (mean of %d routines), %zu holes: optimized %.2f%%, lowest points %.2f%% -> %s\n",
                     routines, result.plan.holes.size(), 100 * optimized, 100 * baseline,
                     optimized < baseline ? "optimized better" : "baseline not beaten");
         std::vector<double> simulated;
         for (size_t s = 0; s < random_sets.size(); ++s) {
-            simulated.push_back(simulate(*result.shell, random_sets[s], routines));
+            simulated.push_back(simulate(*result.shell, random_sets[s], routines, name, cache));
             std::printf("  random set %zu (%zu holes): predicted %.2f%%, simulated %.2f%%\n", s, random_sets[s].size(),
                         100 * predicted[s], 100 * simulated.back());
         }
