@@ -581,7 +581,9 @@ FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
  *   bottom_file, parting_direction, volume (mm^3), weight (g),
  *   restored_volume, deformation {handles, max_displacement (mm),
  *   mean_displacement (mm), volume_change (mm^3)}, added_volume (by the
- *   sweep), added_volume_ratio, removed_by_keep_out,
+ *   sweep), added_volume_ratio, removed_by_keep_out, columns_trimmed,
+ *   handed_over {given, received} (mm^3 of a part's own material handed to
+ *   or from other parts where they split its columns),
  *   mean_distance_ratio, hausdorff_ratio, mold {size [e1, up, d] mm, center,
  *   up, gates, vents} or, with FABVDB_MOLD_COMMON, common_mold_offset}],
  *   common_mold {top_file, bottom_file, size, gates, vents} (row

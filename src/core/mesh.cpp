@@ -56,6 +56,11 @@ std::vector<Vec3> area_weighted_vertex_normals(const Mesh& mesh) {
     return normals;
 }
 
+double squared_distance(const Vec3& a, const Vec3& b) {
+    const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    return dx * dx + dy * dy + dz * dz;
+}
+
 double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c) {
     return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
            a[2] * (b[0] * c[1] - b[1] * c[0]);

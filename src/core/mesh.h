@@ -29,6 +29,9 @@ struct BoundingBox {
 //! `referenced_only` is false). Empty input gives a zero box.
 BoundingBox bounding_box(const Mesh& mesh, bool referenced_only = true);
 
+//! Squared Euclidean distance between two points.
+double squared_distance(const Vec3& a, const Vec3& b);
+
 //! Cross product of two edges of one triangle (b - a) x (c - a): normal to
 //! it by the right-hand rule, twice its area long.
 Vec3 triangle_normal(const Mesh& mesh, const Triangle& t);

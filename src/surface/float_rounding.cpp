@@ -32,12 +32,6 @@ double nearest_float(double x) {
 
 Vec3 nearest_float(const Vec3& p) { return {nearest_float(p[0]), nearest_float(p[1]), nearest_float(p[2])}; }
 
-double squared_distance(const Vec3& a, const Vec3& b) {
-    double sum = 0;
-    for (int k = 0; k < 3; ++k) sum += (a[k] - b[k]) * (a[k] - b[k]);
-    return sum;
-}
-
 using Point = CGAL::Epick::Point_3;
 
 Point point(const Vec3& p) { return {p[0], p[1], p[2]}; }

@@ -9,15 +9,6 @@
 
 namespace fabvdb::volume {
 
-namespace {
-
-double squared_distance(const Vec3& a, const Vec3& b) {
-    const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-    return dx * dx + dy * dy + dz * dz;
-}
-
-}  // namespace
-
 double surface_isovalue(const openvdb::FloatGrid& grid) { return 1e-4 * grid.voxelSize()[0]; }
 
 Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& progress) {
