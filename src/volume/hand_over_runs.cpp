@@ -42,7 +42,7 @@ openvdb::FloatGrid::Ptr unkept_runs(const openvdb::FloatGrid& swept, const openv
             float* column = block.data() + c * nz;
             const std::vector<Run> runs = inside_runs(column, nz);
             if (runs.empty()) continue;
-            const Run kept = runs[runs.size() > 1 ? kept_run(runs, crossings, int(c / ny), int(c % ny)) : 0];
+            const Run kept = runs[kept_run(runs, crossings, int(c / ny), int(c % ny))];
             for (size_t k = 0; k < nz; ++k)
                 if (runs.size() == 1 || (k + 1 >= kept.start && k <= kept.end))
                     column[k] = std::max(std::abs(column[k]), outside);
