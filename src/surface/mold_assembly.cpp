@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "surface/clear_grid_origin.h"
 #include "surface/face_sweep.h"
 #include "surface/float_rounding.h"
 #include "surface/height_field_solid.h"
@@ -78,10 +79,21 @@ MoldPair assemble_in_frame(const Mesh& local, const std::vector<std::vector<Vec3
     const double margin = options.margin;
     const double step = options.grid_step > 0 ? options.grid_step : margin / 8;
 
+    // The block reaches at least `margin` past the part, and up to a grid
+    // step more: its grid lines, which the parting surface's edges and the
+    // channels' walls follow, keep as far as they can from the part's
+    // vertices. A line at a fixed distance from the part's bounding box
+    // would run through its extreme vertices (with the default step, a
+    // whole number of steps from the block's side), and on a part meshed on
+    // a voxel grid the mold frame keeps, those lie in one plane only within
+    // a float step: the exact booleans would leave slivers no double or
+    // float coordinates can hold apart.
     Vec3 block_lo, block_hi;
     int block_cells[2];
+    std::vector<double> coordinates(local.vertices.size());
     for (int k = 0; k < 2; ++k) {
-        block_lo[k] = box.min[k] - margin;
+        for (size_t v = 0; v < local.vertices.size(); ++v) coordinates[v] = local.vertices[v][k];
+        block_lo[k] = clear_grid_origin(coordinates, box.min[k] - margin, step);
         block_cells[k] = int(std::ceil((box.max[k] + margin - block_lo[k]) / step));
         block_hi[k] = block_lo[k] + block_cells[k] * step;
     }

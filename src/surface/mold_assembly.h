@@ -1,7 +1,8 @@
 //! A two-piece mold for one moldable part (thesis §3.6.3): in the frame where
-//! the parting direction d is +Z, a block with `margin` around the part is
-//! split by the RBF parting surface through the part's silhouette (its
-//! parting line; kept a quarter grid step above the line, which leaves a
+//! the parting direction d is +Z, a block reaching at least `margin` past
+//! the part (up to one grid step more: its grid lines keep clear of the
+//! part's vertices, clear_grid_origin.h) is split by the RBF parting
+//! surface through the part's silhouette (its parting line; kept a quarter grid step above the line, which leaves a
 //! lip of that height on the bottom piece instead of needle triangles) and
 //! the pieces are
 //!   bottom = ((B⁻ ∪ SV↓ ∪ pins) ∖ SV↑ ∖ channels) ∩ slab,

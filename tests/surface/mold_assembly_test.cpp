@@ -106,6 +106,47 @@ TEST(MoldAssembly, CommonMoldForTheTwoHalvesOfASphere) {
     fabvdb::test::check_two_piece_mold(row, {0, 0, 1}, {mold.top, mold.bottom, mold.channels});
 }
 
+// A lens (a ring of 96 vertices between two apexes, 20 mm across) whose
+// silhouette is flattened at its extreme −x onto the plane x = −10, every
+// other vertex of the flat a float step off it, as the contour vertices of
+// a part meshed on a voxel grid the mold frame keeps (fertility at
+// --voxel 0.4295mm). With the block grid lines a whole number of steps
+// from the part's bounding box, one line lay in that plane and the exact
+// booleans left slivers an ulp wide: the top piece could not be rounded to
+// float coordinates (an INTERNAL error).
+Mesh lens_with_a_flat_an_ulp_thick() {
+    const int n = 96;
+    const double x_flat = -10.0;
+    const double ulp = std::nextafter(x_flat, 0.0) - x_flat;
+    Mesh lens;
+    for (int k = 0; k < n; ++k) {
+        const double angle = 2 * M_PI * k / n;
+        double x = 10 * std::cos(angle);
+        if (x < -10 * std::cos(0.3)) x = x_flat + (k % 2 ? ulp : 0.0);
+        lens.vertices.push_back({x, 10 * std::sin(angle), 0.3 * std::sin(5 * angle)});
+    }
+    lens.vertices.push_back({0.3, 0.2, 6.0});
+    lens.vertices.push_back({-0.2, 0.1, -6.0});
+    const uint32_t top = n, bottom = n + 1;
+    for (uint32_t k = 0; k < uint32_t(n); ++k) {
+        const uint32_t next = (k + 1) % n;
+        lens.triangles.push_back({k, next, top});
+        lens.triangles.push_back({next, k, bottom});
+    }
+    return lens;
+}
+
+TEST(MoldAssembly, SilhouetteInAPlaneWithinAFloatStep) {
+    const Mesh lens = lens_with_a_flat_an_ulp_thick();
+    fabvdb::Progress progress;
+    for (const double step : {1.6, 1.0}) {
+        SCOPED_TRACE("grid step " + std::to_string(step));
+        fabvdb::surface::MoldOptions options = small_mold_options();
+        options.grid_step = step;
+        check_mold(lens, {0, 0, 1}, fabvdb::surface::assemble_mold(lens, {0, 0, 1}, options, progress));
+    }
+}
+
 TEST(MoldAssembly, PartThatIsNotAHeightFieldIsRefused) {
     const Mesh ring = fabvdb::test::make_standing_torus(14.0, 4.0, 32, 12);
     fabvdb::Progress progress;
