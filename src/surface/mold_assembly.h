@@ -2,9 +2,9 @@
 //! the parting direction d is +Z, a block reaching at least `margin` past
 //! the part (up to one grid step more: its grid lines keep clear of the
 //! part's vertices, clear_grid_origin.h) is split by the RBF parting
-//! surface through the part's silhouette (its parting line; kept a quarter grid step above the line, which leaves a
-//! lip of that height on the bottom piece instead of needle triangles) and
-//! the pieces are
+//! surface through the part's silhouette (its parting line; kept a quarter
+//! grid step above the line, which leaves a lip of that height on the
+//! bottom piece instead of needle triangles) and the pieces are
 //!   bottom = ((B⁻ ∪ SV↓ ∪ pins) ∖ SV↑ ∖ channels) ∩ slab,
 //!   top    = ((B⁺ ∪ SV↑) ∖ SV↓ ∖ channels ∖ key holes) ∩ slab,
 //! B∓ the block below/above the parting surface, SV↑ the part swept up to the
