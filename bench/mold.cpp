@@ -63,10 +63,19 @@ int main(int argc, char** argv) {
             const fabvdb::BoundingBox box = fabvdb::bounding_box(input);
             const double longest =
                 std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
-            for (fabvdb::Vec3& p : input.vertices) p = {p[0] * 100 / longest, p[1] * 100 / longest, p[2] * 100 / longest};
+            // Scaled as `--fit 100mm` scales, so the figures are those of `fabvdb mold --fit 100mm`.
+            const double factor = 100 / longest;
+            for (fabvdb::Vec3& p : input.vertices)
+                for (double& c : p) c *= factor;
 
+            // The shell thickness `fabvdb mold` uses by default (3% of the
+            // longest side, computed the same way: the decomposition changes
+            // with its last bit, e.g. fertility's parts at 3.0 and at
+            // 2.999999999999999 mm differ).
+            const fabvdb::BoundingBox fitted = fabvdb::bounding_box(input);
             fabvdb::surface::DecomposeSettings settings;
-            settings.shell.thickness = 3.0;
+            settings.shell.thickness = 0.03 * std::max({fitted.max[0] - fitted.min[0], fitted.max[1] - fitted.min[1],
+                                                        fitted.max[2] - fitted.min[2]});
             const auto decomposition = fabvdb::surface::decompose_mesh(input, settings, {}, progress);
             const auto document = fabvdb::surface::decomposition_document(
                 decomposition.shell, decomposition.terms, decomposition.decomposition, settings.decomposition);

@@ -94,6 +94,19 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
     figures.volume_before = openvdb::tools::levelSetVolume(*aligned);
     if (aligned->activeVoxelCount() == 0) throw Error(FABVDB_ERR_BAD_INPUT, "the part to sweep is empty");
 
+    // The other parts on the aligned grid: the sweep's added material keeps
+    // out of them, and trimming does not give up what they hold.
+    openvdb::FloatGrid::Ptr others;
+    if (!keep_out.empty()) {
+        progress.stage("sweep: other parts");
+        for (size_t i = 0; i < keep_out.size(); ++i) {
+            openvdb::FloatGrid::Ptr solid = resampled(*keep_out[i], transform, background, interrupter, progress);
+            if (!others) others = solid;
+            else openvdb::tools::csgUnion(*others, *solid);
+            progress.update(double(i + 1) / double(keep_out.size()));
+        }
+    }
+
     progress.stage("sweep: columns");
     openvdb::CoordBBox box = aligned->evalActiveVoxelBoundingBox();
     box.expand(1);
@@ -113,21 +126,14 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
         progress.update(0.6);
         if (options.kept_surface) {
             figures.columns_trimmed = trim_deep_fills(original, dense, *transform, *options.kept_surface, background,
-                                                      2.0 * voxel, progress);
+                                                      2.0 * voxel, others.get(), progress);
         }
         swept = dense_level_set(dense, *transform, background, progress);
     }
     figures.volume_swept = openvdb::tools::levelSetVolume(*swept);
 
-    if (!keep_out.empty()) {
+    if (others) {
         progress.stage("sweep: keep out of other parts");
-        openvdb::FloatGrid::Ptr others;
-        for (size_t i = 0; i < keep_out.size(); ++i) {
-            openvdb::FloatGrid::Ptr solid = resampled(*keep_out[i], transform, background, interrupter, progress);
-            if (!others) others = solid;
-            else openvdb::tools::csgUnion(*others, *solid);
-            progress.update(double(i + 1) / double(keep_out.size()));
-        }
         openvdb::tools::csgDifference(*swept, *others);
         progress.check();
     }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -19,31 +20,36 @@ namespace {
 
 using Sampler = openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler>;
 
+//! The block's part as a true signed distance out to `band` voxels on both sides.
+openvdb::FloatGrid::Ptr signed_distance(const openvdb::tools::Dense<float>& block,
+                                        const openvdb::math::Transform& transform, float background, float band,
+                                        Progress& progress) {
+    auto part = openvdb::FloatGrid::create(background);
+    part->setTransform(transform.copy());
+    part->setGridClass(openvdb::GRID_LEVEL_SET);
+    openvdb::tools::copyFromDense(block, *part, 0.0f);
+    progress.check();
+    ProgressInterrupter interrupter(progress);
+    openvdb::FloatGrid::Ptr distance = openvdb::tools::levelSetRebuild(*part, 0.0f, band, band, nullptr, &interrupter);
+    progress.check();
+    return distance;
+}
+
 }  // namespace
 
 size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense<float>& filled,
                        const openvdb::math::Transform& transform, const openvdb::FloatGrid& surface,
-                       float background, double min_depth, Progress& progress) {
+                       float background, double min_depth, const openvdb::FloatGrid* others, Progress& progress) {
     progress.stage("sweep: fill or trim");
     const openvdb::CoordBBox box = filled.bbox();
     const openvdb::Coord dim = box.dim();
     const int nx = dim.x(), ny = dim.y();
     const size_t nz = size_t(dim.z()), columns = size_t(nx) * size_t(ny);
     const double voxel = transform.voxelSize()[0];
+    const float band = float(std::max(3.0, std::ceil(4.0 * min_depth / voxel)));
 
     // Depth below the filled part's surface, as a true signed distance.
-    openvdb::FloatGrid::Ptr distance;
-    {
-        auto hull = openvdb::FloatGrid::create(background);
-        hull->setTransform(transform.copy());
-        hull->setGridClass(openvdb::GRID_LEVEL_SET);
-        openvdb::tools::copyFromDense(filled, *hull, 0.0f);
-        progress.check();
-        const float interior = float(std::max(3.0, std::ceil(4.0 * min_depth / voxel)));
-        ProgressInterrupter interrupter(progress);
-        distance = openvdb::tools::levelSetRebuild(*hull, 0.0f, 1.0f, interior, nullptr, &interrupter);
-        progress.check();
-    }
+    const openvdb::FloatGrid::Ptr distance = signed_distance(filled, transform, background, band, progress);
     progress.update(0.5);
 
     const auto world = [&](size_t c, double z) {
@@ -104,31 +110,96 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
     }
     progress.update(0.75);
 
+    // Each trimmed column keeps one run, the one with the most input surface
+    // at its ends, the longer on a tie; its filled values are kept aside.
+    std::vector<Run> kept(trimmed.size());
+    std::vector<std::vector<float>> filled_columns(trimmed.size());
+    const auto is_input_surface = [&](const Sampler& sampler, size_t c, const float* column, size_t k) {
+        return std::abs(sampler.wsSample(world(c, zero_crossing(column, k)))) < voxel;
+    };
+    const auto trim = [&](size_t t) {
+        const float* column = original.data() + trimmed[t] * nz;
+        float* out = filled.data() + trimmed[t] * nz;
+        const float outside = float(0.5 * voxel);
+        for (size_t k = 0; k < nz; ++k)
+            out[k] = k + 1 >= kept[t].start && k <= kept[t].end ? column[k] : std::max(std::abs(column[k]), outside);
+    };
     tbb::parallel_for(tbb::blocked_range<size_t>(0, trimmed.size()), [&](const tbb::blocked_range<size_t>& range) {
         const openvdb::FloatGrid::ConstAccessor surface_access = surface.getConstAccessor();
         const Sampler surface_sampler(surface_access, surface.transform());
         for (size_t t = range.begin(); t != range.end(); ++t) {
             const size_t c = trimmed[t];
             const float* column = original.data() + c * nz;
-            const std::vector<Run> runs = inside_runs(column, nz);
-            // The run with the most input surface at its ends, the longer on a tie.
-            const Run* kept = nullptr;
             int kept_ends = -1;
-            for (const Run& run : runs) {
-                int ends = 0;
-                for (const size_t k : {run.start - 1, run.end - 1})
-                    ends += std::abs(surface_sampler.wsSample(world(c, zero_crossing(column, k)))) < voxel;
-                if (ends > kept_ends || (ends == kept_ends && run.end - run.start > kept->end - kept->start))
-                    kept = &run, kept_ends = ends;
+            for (const Run& run : inside_runs(column, nz)) {
+                const int ends = is_input_surface(surface_sampler, c, column, run.start - 1) +
+                                 is_input_surface(surface_sampler, c, column, run.end - 1);
+                if (ends > kept_ends || (ends == kept_ends && run.end - run.start > kept[t].end - kept[t].start))
+                    kept[t] = run, kept_ends = ends;
             }
-            float* out = filled.data() + c * nz;
-            const float outside = float(0.5 * voxel);
-            for (size_t k = 0; k < nz; ++k)
-                out[k] = k + 1 >= kept->start && k <= kept->end ? column[k] : std::max(std::abs(column[k]), outside);
+            filled_columns[t].assign(filled.data() + c * nz, filled.data() + (c + 1) * nz);
+            trim(t);
         }
     });
     progress.check();
-    return trimmed.size();
+
+    // A trimmed column is filled again where the input surface it gave up
+    // lies farther from the trimmed part than the column's own buried depth
+    // (thin edges of a given-up run, next to a filled neighbour). The next
+    // round measures what that fill buried, the input surface near the
+    // column's filled gap included (a slot's walls run along the column, and
+    // its depth does not count them): where it is buried deeper than the
+    // given-up surface lay away, the column goes back to its trimmed values
+    // for good. At most 4 rounds, so a fill grows over an edge column by column.
+    enum State : char { Trimmed, Refilled, Checked };
+    std::vector<State> state(trimmed.size(), Trimmed);
+    std::vector<float> given_up(trimmed.size(), 0.0f);
+    const int rounds = 4;
+    for (int round = 0; round <= rounds; ++round) {
+        const openvdb::FloatGrid::Ptr distance_now = signed_distance(filled, transform, background, band, progress);
+        std::vector<char> refill(trimmed.size(), 0), restore(trimmed.size(), 0);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, trimmed.size()), [&](const tbb::blocked_range<size_t>& range) {
+            if (progress.cancelled()) return;
+            const openvdb::FloatGrid::ConstAccessor surface_access = surface.getConstAccessor();
+            const openvdb::FloatGrid::ConstAccessor distance_access = distance_now->getConstAccessor();
+            const Sampler surface_sampler(surface_access, surface.transform());
+            const Sampler distance_sampler(distance_access, distance_now->transform());
+            std::optional<openvdb::FloatGrid::ConstAccessor> others_access;
+            if (others) others_access.emplace(others->getConstAccessor());
+            for (size_t t = range.begin(); t != range.end(); ++t) {
+                if (state[t] == Checked || (state[t] == Trimmed && round == rounds)) continue;
+                const size_t c = trimmed[t];
+                float farthest = 0, deepest_buried = 0;
+                for (size_t k = 0; k < nz; ++k) {
+                    if (k + 1 >= kept[t].start && k <= kept[t].end) continue;
+                    const openvdb::Vec3d p = world(c, double(k));
+                    const float to_surface = std::abs(surface_sampler.wsSample(p));
+                    if (to_surface >= voxel) continue;
+                    const float value = distance_sampler.wsSample(p);
+                    const bool another_part_has_it =
+                        others && Sampler(*others_access, others->transform()).wsSample(p) < 0.5 * voxel;
+                    if (to_surface < 0.5 * voxel && !another_part_has_it) farthest = std::max(farthest, value);
+                    deepest_buried = std::max(deepest_buried, -value);
+                }
+                if (state[t] == Refilled) restore[t] = deepest_buried > given_up[t];
+                else if (farthest > depth[c]) refill[t] = 1, given_up[t] = farthest;
+            }
+        });
+        progress.check();
+        size_t changed = 0;
+        for (size_t t = 0; t < trimmed.size(); ++t) {
+            if (state[t] == Refilled) {
+                state[t] = Checked;
+                if (restore[t]) trim(t), given_up[t] = -1;
+            } else if (refill[t]) {
+                std::copy(filled_columns[t].begin(), filled_columns[t].end(), filled.data() + trimmed[t] * nz);
+                state[t] = Refilled;
+                ++changed;
+            }
+        }
+        if (changed == 0) break;
+    }
+    return size_t(std::count_if(given_up.begin(), given_up.end(), [](float v) { return v <= 0; }));
 }
 
 }  // namespace fabvdb::volume

@@ -9,7 +9,9 @@
 //! input surface, the longer on a tie, and give up the others), the deeper
 //! ones stay filled. A groove undercut by depth h then leaves its surface
 //! within about h/2 of the part, filled on one side and trimmed on the
-//! other, instead of buried h deep. Depths are measured in 3D on the filled
+//! other, instead of buried h deep. A trimmed column is filled again when
+//! the input surface it gave up lies farther from the trimmed part than its
+//! own buried depth (rounds of this grow a fill over a given-up thin edge). Depths are measured in 3D on the filled
 //! part's rebuilt signed distance, out to 4·min_depth (a deeper region counts
 //! as that deep, so it is trimmed over a strip 2·min_depth deep only). Works
 //! on the sweep's dense column block (index z along the parting direction).
@@ -30,10 +32,12 @@ namespace fabvdb::volume {
 //! index z contiguous). `filled`: the swept block, rewritten in the trimmed
 //! columns. `transform`: the block's index-to-world map. `surface`: level set
 //! of the input surface (a run end counts as input surface within a voxel of
-//! its zero). `background`: the part's narrow-band half width, mm. Returns
+//! its zero). `background`: the part's narrow-band half width, mm. `others`:
+//! the other parts' union as a level set (nullptr: none); input surface they
+//! hold is not given up by trimming, so it never calls for a refill. Returns
 //! the number of trimmed columns.
 size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense<float>& filled,
                        const openvdb::math::Transform& transform, const openvdb::FloatGrid& surface,
-                       float background, double min_depth, Progress& progress);
+                       float background, double min_depth, const openvdb::FloatGrid* others, Progress& progress);
 
 }  // namespace fabvdb::volume
