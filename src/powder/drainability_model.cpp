@@ -2,7 +2,10 @@
 #include "powder/drainability_model.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <queue>
 #include <utility>
 
 #include <Eigen/SparseCore>
@@ -82,6 +85,37 @@ Eigen::VectorXd solve(const SparseMatrix& base, const SparseMatrix& captured, do
     return x;
 }
 
+//! The steps to the 26 cells around a sample, and each sample's sample
+//! there (kNoSample if none, or if no path of face steps leads there:
+//! a diagonal step never cuts through a wall's edge or corner).
+constexpr int kLinkOffsets[26][3] = {
+    {1, 0, 0},   {-1, 0, 0},  {0, 1, 0},   {0, -1, 0},  {0, 0, 1},   {0, 0, -1},  {1, 1, 0},
+    {1, -1, 0},  {-1, 1, 0},  {-1, -1, 0}, {1, 0, 1},   {1, 0, -1},  {-1, 0, 1},  {-1, 0, -1},
+    {0, 1, 1},   {0, 1, -1},  {0, -1, 1},  {0, -1, -1}, {1, 1, 1},   {1, 1, -1},  {1, -1, 1},
+    {1, -1, -1}, {-1, 1, 1},  {-1, 1, -1}, {-1, -1, 1}, {-1, -1, -1}};
+
+std::vector<std::array<uint32_t, 26>> sample_links(const SampleGrid& grid) {
+    std::vector<std::array<uint32_t, 26>> links(grid.size());
+    tbb::parallel_for(size_t(0), grid.size(), [&](size_t a) {
+        for (size_t d = 0; d < 26; ++d) {
+            // The face steps of this offset (neighbours' order: +x −x +y −y +z −z), tried in every order.
+            std::array<size_t, 3> faces{};
+            size_t count = 0;
+            for (size_t axis = 0; axis < 3; ++axis)
+                if (kLinkOffsets[d][axis] != 0) faces[count++] = 2 * axis + (kLinkOffsets[d][axis] < 0 ? 1 : 0);
+            std::sort(faces.begin(), faces.begin() + long(count));
+            uint32_t found = kNoSample;
+            do {
+                uint32_t at = uint32_t(a);
+                for (size_t k = 0; k < count && at != kNoSample; ++k) at = grid.neighbours[at][faces[k]];
+                found = at;
+            } while (found == kNoSample && std::next_permutation(faces.begin(), faces.begin() + long(count)));
+            links[a][d] = found;
+        }
+    });
+    return links;
+}
+
 }  // namespace
 
 struct DrainabilityModel::TurnChain {
@@ -116,6 +150,29 @@ SparseMatrix captured_part(const std::vector<OrientationFlow>& turns, size_t n,
 
 }  // namespace
 
+//! Heights and floors of the later-turn samples (see drainability_model.h):
+//! the floor lies halfway to the empty cell around the sample that is
+//! lowest along gravity.
+DrainabilityModel::Relief DrainabilityModel::later_relief(const Vec3& gravity) const {
+    const SampleGrid& grid = later_grid_;
+    const double step = grid.stride * powder_.spacing;
+    std::array<float, 26> drop;
+    for (size_t d = 0; d < 26; ++d)
+        drop[d] = float(0.5 * step *
+                        (kLinkOffsets[d][0] * gravity[0] + kLinkOffsets[d][1] * gravity[1] + kLinkOffsets[d][2] * gravity[2]));
+    Relief result;
+    result.height.resize(grid.size());
+    result.floor.resize(grid.size());
+    for (size_t a = 0; a < grid.size(); ++a) {
+        result.height[a] = float(-dot(powder_.position[grid.sample[a]], gravity));
+        float below = 0.0f;
+        for (size_t d = 0; d < 26; ++d)
+            if (later_links_[a][d] == kNoSample) below = std::max(below, drop[d]);
+        result.floor[a] = below > 0.0f ? result.height[a] - below : -std::numeric_limits<float>::infinity();
+    }
+    return result;
+}
+
 DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::vector<OrientationFlow>& turns,
                                      const OrientationFlow& first, const PowderSamples& powder,
                                      const DrainabilityOptions& options)
@@ -140,16 +197,17 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     };
     cavities(first_grid_, first_cavity_, first_count_);
     cavities(later_grid_, later_cavity_, later_count_);
-    auto heights = [&](const SampleGrid& grid, const Vec3& gravity) {
-        std::vector<float> height(grid.size());
-        for (size_t a = 0; a < grid.size(); ++a) height[a] = float(-dot(powder.position[grid.sample[a]], gravity));
-        return height;
-    };
-    first_forest_ = sublevel_forest(first_grid_.neighbours, heights(first_grid_, first.gravity));
+    later_links_ = sample_links(later_grid_);
+    std::vector<float> first_height(first_grid_.size());
+    for (size_t a = 0; a < first_grid_.size(); ++a)
+        first_height[a] = float(-dot(powder.position[first_grid_.sample[a]], first.gravity));
+    first_forest_ = sublevel_forest(first_grid_.neighbours, first_height);
     later_forests_.resize(turns.size());
+    later_relief_.resize(turns.size());
     later_cavity_rank_.resize(turns.size());
     tbb::parallel_for(size_t(0), turns.size(), [&](size_t k) {
-        later_forests_[k] = sublevel_forest(later_grid_.neighbours, heights(later_grid_, turns[k].gravity));
+        later_relief_[k] = later_relief(turns[k].gravity);
+        later_forests_[k] = sublevel_forest(later_grid_.neighbours, later_relief_[k].height);
         std::vector<uint32_t> next(patches.cavity_count, 0);
         later_cavity_rank_[k].resize(later_grid_.size());
         for (uint32_t a : later_forests_[k].order) later_cavity_rank_[k][a] = next[later_cavity_[a]]++;
@@ -267,8 +325,8 @@ bool DrainabilityModel::Cone::below(const Vec3& point) const {
 double DrainabilityModel::total_volume() const { return powder_.total_volume(); }
 
 template <class Visit>
-void DrainabilityModel::walk_drained(const DrainHole& hole, const SampleGrid& grid, const SublevelForest& forest,
-                                     const Vec3& gravity, Visit visit) const {
+void DrainabilityModel::walk_above_cone(const DrainHole& hole, const SampleGrid& grid, const SublevelForest& forest,
+                                        const Vec3& gravity, Visit visit) const {
     if (!absorbing(hole, gravity)) return;
     uint32_t a = grid.nearest(hole.center);
     if (a == kNoSample) return;
@@ -277,6 +335,61 @@ void DrainabilityModel::walk_drained(const DrainHole& hole, const SampleGrid& gr
         if (!crater.below(powder_.position[grid.sample[a]])) visit(a);
         if (forest.parent[a] == a) break;
         a = forest.parent[a];
+    }
+}
+
+template <class Visit>
+void DrainabilityModel::walk_above_surface(const DrainHole& hole, size_t turn, Visit visit) const {
+    const Vec3& gravity = turns_[turn].gravity;
+    const SublevelForest& forest = later_forests_[turn];
+    const Relief& relief = later_relief_[turn];
+    if (!absorbing(hole, gravity)) return;
+    const uint32_t source = later_grid_.nearest(hole.center);
+    if (source == kNoSample) return;
+    // Powder can drain only if it reaches the mouth without climbing (the
+    // source's ancestors) and lies above the crater's cone; past the highest
+    // such sample nothing more drains.
+    constexpr float kUnreached = std::numeric_limits<float>::infinity();
+    std::vector<float> surface(later_grid_.size(), -1.0f);
+    const Cone crater = cone(hole, gravity);
+    float top = -kUnreached;
+    for (uint32_t a = source;; a = forest.parent[a]) {
+        surface[a] = kUnreached;
+        if (!crater.below(powder_.position[later_grid_.sample[a]])) top = std::max(top, relief.height[a]);
+        if (forest.parent[a] == a) break;
+    }
+    // The surface the powder keeps, found from the crater outwards (Dijkstra
+    // over the ancestors): rising with slope θ_r by the horizontal length of
+    // each step along paths through the cavity (steps to the 26 cells
+    // around, so the surface is nearly round), never below a floor. Powder
+    // above it drains. It never lies below the crater's cone.
+    const double step = later_grid_.stride * powder_.spacing;
+    std::array<float, 26> climb;
+    for (size_t d = 0; d < 26; ++d) {
+        const Vec3 v{step * kLinkOffsets[d][0], step * kLinkOffsets[d][1], step * kLinkOffsets[d][2]};
+        climb[d] = float(tan_repose_ * rise_and_across(v, {0, 0, 0}, gravity).second);
+    }
+    const double across = rise_and_across(powder_.position[later_grid_.sample[source]], crater.apex, gravity).second;
+    const double apex = -dot(crater.apex, gravity);
+    surface[source] = float(across <= crater.mouth ? apex - crater.mouth : apex + tan_repose_ * (across - crater.mouth));
+    using Entry = std::pair<float, uint32_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    queue.push({surface[source], source});
+    while (!queue.empty()) {
+        const auto [level, b] = queue.top();
+        queue.pop();
+        if (level > surface[b]) continue;
+        if (level >= top) break;
+        if (relief.height[b] > level) visit(b);
+        for (size_t d = 0; d < 26; ++d) {
+            const uint32_t c = later_links_[b][d];
+            if (c == kNoSample || surface[c] < 0.0f) continue;
+            const float next = std::max(level + climb[d], relief.floor[c]);
+            if (next < surface[c]) {
+                surface[c] = next;
+                queue.push({next, c});
+            }
+        }
     }
 }
 
@@ -304,24 +417,29 @@ std::vector<uint32_t> words_before(const std::vector<uint64_t>& bits) {
 
 }  // namespace
 
-DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole) const {
+DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole, Crater crater) const {
     Reach result;
     result.cavity = hole.cavity;
     result.first.assign((first_grid_.size() + 63) / 64, 0);
-    walk_drained(hole, first_grid_, first_forest_, first_.gravity, [&](uint32_t a) { set_bit(result.first, a); });
+    walk_above_cone(hole, first_grid_, first_forest_, first_.gravity, [&](uint32_t a) { set_bit(result.first, a); });
     result.later.resize(turns_.size());
     const size_t words = (size_t(later_count_[hole.cavity]) + 63) / 64;
-    for (size_t k = 0; k < turns_.size(); ++k)
-        walk_drained(hole, later_grid_, later_forests_[k], turns_[k].gravity, [&](uint32_t a) {
+    for (size_t k = 0; k < turns_.size(); ++k) {
+        auto drained = [&](uint32_t a) {
             if (result.later[k].empty()) result.later[k].assign(words, 0);
             set_bit(result.later[k], later_cavity_rank_[k][a]);
-        });
+        };
+        if (crater == Crater::cone)
+            walk_above_cone(hole, later_grid_, later_forests_[k], turns_[k].gravity, drained);
+        else
+            walk_above_surface(hole, k, drained);
+    }
     return result;
 }
 
-DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& holes) const {
+DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& holes, Crater crater) const {
     std::vector<Reach> reaches(holes.size());
-    tbb::parallel_for(size_t(0), holes.size(), [&](size_t h) { reaches[h] = reach(holes[h]); });
+    tbb::parallel_for(size_t(0), holes.size(), [&](size_t h) { reaches[h] = reach(holes[h], crater); });
     Drain result;
     result.holes = holes;
     result.first.assign((first_grid_.size() + 63) / 64, 0);

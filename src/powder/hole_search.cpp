@@ -14,6 +14,14 @@ namespace fabvdb::powder {
 
 namespace {
 
+//! The search's objective: the later turns by the crater's cone
+//! (DrainabilityModel::Crater::cone), not the surface of repose the
+//! prediction uses. Measured against the reference simulation (4 routines,
+//! 80 mm): the cone search's holes leave 0.74% on fertility with 8 holes
+//! where the surface search's leave 2.72%, and 0.94% on bunny with 5 where
+//! the surface's leave 0.42%; the surface search took 2.5 to 5 times longer.
+constexpr DrainabilityModel::Crater kCrater = DrainabilityModel::Crater::cone;
+
 double distance(const DrainHole& a, const DrainHole& b) {
     const double x = a.center[0] - b.center[0], y = a.center[1] - b.center[1], z = a.center[2] - b.center[2];
     return std::sqrt(x * x + y * y + z * z);
@@ -54,7 +62,7 @@ public:
     //! parallel; each candidate's reach is computed once and kept.
     std::vector<double> residuals_with(const DrainabilityModel::Drain& drain, const std::vector<size_t>& sites) {
         tbb::parallel_for(size_t(0), sites.size(), [&](size_t k) {
-            if (!reach_[sites[k]]) reach_[sites[k]] = std::make_unique<DrainabilityModel::Reach>(model_.reach(candidates_[sites[k]]));
+            if (!reach_[sites[k]]) reach_[sites[k]] = std::make_unique<DrainabilityModel::Reach>(model_.reach(candidates_[sites[k]], kCrater));
         });
         std::vector<double> residual(sites.size());
         tbb::parallel_for(size_t(0), sites.size(),
@@ -138,7 +146,7 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     if (options.hole_count < 0) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the hole count cannot be negative");
     Search search(model, candidates, options);
     HoleSearchResult result;
-    DrainabilityModel::Drain drain = model.drain(result.holes);
+    DrainabilityModel::Drain drain = model.drain(result.holes, kCrater);
     double residual = 0.0;
     for (double v : drain.residual_per_cavity) residual += v;
     const double total = model.total_volume();
@@ -153,7 +161,7 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     auto add = [&](const Choice& choice) {
         result.holes.push_back(candidates[choice.candidate]);
         ++count[candidates[choice.candidate].cavity];
-        drain = model.drain(result.holes);
+        drain = model.drain(result.holes, kCrater);
         residual = choice.residual;
     };
     for (uint32_t cavity = 0; cavity < cavity_count; ++cavity)
@@ -181,7 +189,7 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
             const DrainHole moved = others[h];
             others.erase(others.begin() + long(h));
             const int only_cavity = count[moved.cavity] <= per_cavity ? int(moved.cavity) : -1;
-            const Choice choice = search.best_move(model.drain(others), moved, only_cavity);
+            const Choice choice = search.best_move(model.drain(others, kCrater), moved, only_cavity);
             if (!choice.found || choice.residual >= residual - negligible) continue;
             --count[moved.cavity];
             ++count[candidates[choice.candidate].cavity];

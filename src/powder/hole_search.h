@@ -11,6 +11,10 @@
 //! helps). Then local swaps: each hole in turn moves to the best candidate
 //! within half of `min_center_distance` of it if that lowers the predicted
 //! residual.
+//! The residuals the search compares are the model's with the crater's
+//! cone in the later turns (DrainabilityModel::Crater::cone; see
+//! hole_search.cpp for why); the result's evaluation is the model's
+//! prediction (the surface of repose).
 //! Holes keep `min_center_distance` between centres. Cancellable
 //! (Error(CANCELLED)).
 #pragma once
