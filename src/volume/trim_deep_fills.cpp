@@ -20,17 +20,18 @@ namespace {
 
 using Sampler = openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler>;
 
-//! The block's part as a true signed distance out to `band` voxels on both sides.
+//! The block's part as a true signed distance out to `outside` and `inside`
+//! voxels from its surface.
 openvdb::FloatGrid::Ptr signed_distance(const openvdb::tools::Dense<float>& block,
-                                        const openvdb::math::Transform& transform, float background, float band,
-                                        Progress& progress) {
+                                        const openvdb::math::Transform& transform, float background, float outside,
+                                        float inside, Progress& progress) {
     auto part = openvdb::FloatGrid::create(background);
     part->setTransform(transform.copy());
     part->setGridClass(openvdb::GRID_LEVEL_SET);
     openvdb::tools::copyFromDense(block, *part, 0.0f);
     progress.check();
     ProgressInterrupter interrupter(progress);
-    openvdb::FloatGrid::Ptr distance = openvdb::tools::levelSetRebuild(*part, 0.0f, band, band, nullptr, &interrupter);
+    openvdb::FloatGrid::Ptr distance = openvdb::tools::levelSetRebuild(*part, 0.0f, outside, inside, nullptr, &interrupter);
     progress.check();
     return distance;
 }
@@ -49,7 +50,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
     const float band = float(std::max(3.0, std::ceil(4.0 * min_depth / voxel)));
 
     // Depth below the filled part's surface, as a true signed distance.
-    const openvdb::FloatGrid::Ptr distance = signed_distance(filled, transform, background, band, progress);
+    const openvdb::FloatGrid::Ptr distance = signed_distance(filled, transform, background, 1.0f, band, progress);
     progress.update(0.5);
 
     const auto world = [&](size_t c, double z) {
@@ -109,6 +110,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
             if (depth[c] < 0.5f * deepest) trimmed.push_back(c);
     }
     progress.update(0.75);
+    if (trimmed.empty()) return 0;
 
     // Each trimmed column keeps one run, the one with the most input surface
     // at its ends, the longer on a tie; its filled values are kept aside.
@@ -151,12 +153,30 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
     // its depth does not count them): where it is buried deeper than the
     // given-up surface lay away, the column goes back to its trimmed values
     // for good. At most 4 rounds, so a fill grows over an edge column by column.
+    // The rounds measure on the block's columns within `band` + 2 of a
+    // trimmed one only: the cut it makes in the part lies beyond the band.
+    openvdb::CoordBBox around;
+    for (const size_t c : trimmed) around.expand(openvdb::Coord(int(c / size_t(ny)), int(c % size_t(ny)), 0));
+    const int reach = int(band) + 2;
+    const int i0 = std::max(around.min().x() - reach, 0), i1 = std::min(around.max().x() + reach, nx - 1);
+    const int j0 = std::max(around.min().y() - reach, 0), j1 = std::min(around.max().y() + reach, ny - 1);
+    const auto distance_near_trimmed = [&] {
+        openvdb::tools::Dense<float> part(openvdb::CoordBBox(box.min() + openvdb::Coord(i0, j0, 0),
+                                                             openvdb::Coord(box.min().x() + i1, box.min().y() + j1,
+                                                                            box.max().z())));
+        const size_t part_ny = size_t(j1 - j0 + 1);
+        for (int i = i0; i <= i1; ++i)
+            for (int j = j0; j <= j1; ++j)
+                std::copy_n(filled.data() + (size_t(i) * size_t(ny) + size_t(j)) * nz, nz,
+                            part.data() + (size_t(i - i0) * part_ny + size_t(j - j0)) * nz);
+        return signed_distance(part, transform, background, band, band, progress);
+    };
     enum State : char { Trimmed, Refilled, Checked };
     std::vector<State> state(trimmed.size(), Trimmed);
     std::vector<float> given_up(trimmed.size(), 0.0f);
     const int rounds = 4;
     for (int round = 0; round <= rounds; ++round) {
-        const openvdb::FloatGrid::Ptr distance_now = signed_distance(filled, transform, background, band, progress);
+        const openvdb::FloatGrid::Ptr distance_now = distance_near_trimmed();
         std::vector<char> refill(trimmed.size(), 0), restore(trimmed.size(), 0);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, trimmed.size()), [&](const tbb::blocked_range<size_t>& range) {
             if (progress.cancelled()) return;
