@@ -171,7 +171,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
                             part.data() + (size_t(i - i0) * part_ny + size_t(j - j0)) * nz);
         return signed_distance(part, transform, background, band, band, progress);
     };
-    enum State : char { Trimmed, Refilled, Checked };
+    enum State : char { Trimmed, Refilled, Filled, TrimmedBack };
     std::vector<State> state(trimmed.size(), Trimmed);
     std::vector<float> given_up(trimmed.size(), 0.0f);
     const int rounds = 4;
@@ -187,7 +187,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
             std::optional<openvdb::FloatGrid::ConstAccessor> others_access;
             if (others) others_access.emplace(others->getConstAccessor());
             for (size_t t = range.begin(); t != range.end(); ++t) {
-                if (state[t] == Checked || (state[t] == Trimmed && round == rounds)) continue;
+                if (state[t] == Filled || state[t] == TrimmedBack || (state[t] == Trimmed && round == rounds)) continue;
                 const size_t c = trimmed[t];
                 float farthest = 0, deepest_buried = 0;
                 for (size_t k = 0; k < nz; ++k) {
@@ -209,8 +209,8 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
         size_t changed = 0;
         for (size_t t = 0; t < trimmed.size(); ++t) {
             if (state[t] == Refilled) {
-                state[t] = Checked;
-                if (restore[t]) trim(t), given_up[t] = -1;
+                state[t] = restore[t] ? TrimmedBack : Filled;
+                if (restore[t]) trim(t);
             } else if (refill[t]) {
                 std::copy(filled_columns[t].begin(), filled_columns[t].end(), filled.data() + trimmed[t] * nz);
                 state[t] = Refilled;
@@ -219,7 +219,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
         }
         if (changed == 0) break;
     }
-    return size_t(std::count_if(given_up.begin(), given_up.end(), [](float v) { return v <= 0; }));
+    return trimmed.size() - size_t(std::count(state.begin(), state.end(), Filled));
 }
 
 }  // namespace fabvdb::volume
