@@ -201,7 +201,18 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
         }
         if (!improved) break;
     }
+    // The prediction is the surface of repose's, which keeps more than the
+    // cone the search compares: in automatic mode holes go on being added
+    // (by the cone's gain) while the prediction is over the target.
     result.evaluation = model.evaluate(result.holes);
+    while (automatic && int(result.holes.size()) < ceiling &&
+           result.evaluation.residual_volume >= options.target_residual_fraction * total) {
+        progress.check();
+        const Choice choice = search.best_addition(drain, residual, -1);
+        if (!choice.found || choice.residual >= residual - negligible) break;
+        add(choice);
+        result.evaluation = model.evaluate(result.holes);
+    }
     progress.update(1.0);
     return result;
 }

@@ -10,7 +10,8 @@
 //! predicted residual is under `target_residual_fraction` or a hole no longer
 //! helps). Then local swaps: each hole in turn moves to the best candidate
 //! within half of `min_center_distance` of it if that lowers the predicted
-//! residual.
+//! residual. In automatic mode, holes are then added while the prediction
+//! (the evaluation below) is still over the target.
 //! The residuals the search compares are the model's with the crater's
 //! cone in the later turns (DrainabilityModel::Crater::cone; see
 //! hole_search.cpp for why); the result's evaluation is the model's
