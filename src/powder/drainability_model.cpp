@@ -116,6 +116,13 @@ std::vector<std::array<uint32_t, 26>> sample_links(const SampleGrid& grid) {
     return links;
 }
 
+//! Each sample's height along −gravity (what the sublevel forests order by).
+std::vector<float> heights(const SampleGrid& grid, const PowderSamples& powder, const Vec3& gravity) {
+    std::vector<float> height(grid.size());
+    for (size_t a = 0; a < grid.size(); ++a) height[a] = float(-dot(powder.position[grid.sample[a]], gravity));
+    return height;
+}
+
 }  // namespace
 
 struct DrainabilityModel::TurnChain {
@@ -161,10 +168,9 @@ DrainabilityModel::Relief DrainabilityModel::later_relief(const Vec3& gravity) c
         drop[d] = float(0.5 * step *
                         (kLinkOffsets[d][0] * gravity[0] + kLinkOffsets[d][1] * gravity[1] + kLinkOffsets[d][2] * gravity[2]));
     Relief result;
-    result.height.resize(grid.size());
+    result.height = heights(grid, powder_, gravity);
     result.floor.resize(grid.size());
     for (size_t a = 0; a < grid.size(); ++a) {
-        result.height[a] = float(-dot(powder_.position[grid.sample[a]], gravity));
         float below = 0.0f;
         for (size_t d = 0; d < 26; ++d)
             if (later_links_[a][d] == kNoSample) below = std::max(below, drop[d]);
@@ -198,10 +204,7 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     cavities(first_grid_, first_cavity_, first_count_);
     cavities(later_grid_, later_cavity_, later_count_);
     later_links_ = sample_links(later_grid_);
-    std::vector<float> first_height(first_grid_.size());
-    for (size_t a = 0; a < first_grid_.size(); ++a)
-        first_height[a] = float(-dot(powder.position[first_grid_.sample[a]], first.gravity));
-    first_forest_ = sublevel_forest(first_grid_.neighbours, first_height);
+    first_forest_ = sublevel_forest(first_grid_.neighbours, heights(first_grid_, powder, first.gravity));
     later_forests_.resize(turns.size());
     later_relief_.resize(turns.size());
     later_cavity_rank_.resize(turns.size());
