@@ -164,6 +164,14 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
         drain = model.drain(result.holes, kCrater);
         residual = choice.residual;
     };
+    // Adds the best hole anywhere; false when there is none, or (automatic)
+    // when it no longer helps.
+    auto add_best = [&] {
+        const Choice choice = search.best_addition(drain, residual, -1);
+        if (!choice.found || (automatic && choice.residual >= residual - negligible)) return false;
+        add(choice);
+        return true;
+    };
     for (uint32_t cavity = 0; cavity < cavity_count; ++cavity)
         while (count[cavity] < per_cavity) {
             progress.check();
@@ -174,10 +182,7 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     while (int(result.holes.size()) < ceiling) {
         progress.update(double(result.holes.size()) / double(ceiling + 1));
         if (automatic && residual < options.target_residual_fraction * total) break;
-        const Choice choice = search.best_addition(drain, residual, -1);
-        if (!choice.found) break;
-        if (automatic && choice.residual >= residual - negligible) break;
-        add(choice);
+        if (!add_best()) break;
     }
 
     // Local swaps: move one hole to a better site nearby while that helps.
@@ -208,9 +213,7 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     while (automatic && int(result.holes.size()) < ceiling &&
            result.evaluation.residual_volume >= options.target_residual_fraction * total) {
         progress.check();
-        const Choice choice = search.best_addition(drain, residual, -1);
-        if (!choice.found || choice.residual >= residual - negligible) break;
-        add(choice);
+        if (!add_best()) break;
         result.evaluation = model.evaluate(result.holes);
     }
     progress.update(1.0);
