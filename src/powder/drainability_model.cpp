@@ -204,16 +204,15 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     cavities(first_grid_, first_cavity_, first_count_);
     cavities(later_grid_, later_cavity_, later_count_);
     later_links_ = sample_links(later_grid_);
-    first_forest_ = sublevel_forest(first_grid_.neighbours, heights(first_grid_, powder, first.gravity));
+    first_chains_ = chains(first_grid_, sublevel_forest(first_grid_.neighbours, heights(first_grid_, powder, first.gravity)),
+                           first_cavity_);
     later_forests_.resize(turns.size());
     later_relief_.resize(turns.size());
-    later_cavity_rank_.resize(turns.size());
+    later_chains_.resize(turns.size());
     tbb::parallel_for(size_t(0), turns.size(), [&](size_t k) {
         later_relief_[k] = later_relief(turns[k].gravity);
         later_forests_[k] = sublevel_forest(later_grid_.neighbours, later_relief_[k].height);
-        std::vector<uint32_t> next(patches.cavity_count, 0);
-        later_cavity_rank_[k].resize(later_grid_.size());
-        for (uint32_t a : later_forests_[k].order) later_cavity_rank_[k][a] = next[later_cavity_[a]]++;
+        later_chains_[k] = chains(later_grid_, later_forests_[k], later_cavity_);
     });
     patch_sample_.resize(patches.size());
     tbb::parallel_for(size_t(0), patches.size(), [&](size_t j) { patch_sample_[j] = later_grid_.nearest(patches.site[j]); });
@@ -315,7 +314,8 @@ DrainabilityModel::Cone DrainabilityModel::cone(const DrainHole& hole, const Vec
     return result;
 }
 
-bool DrainabilityModel::Cone::below(const Vec3& point) const {
+// Inline: the walks up the chains call it for every sample.
+inline bool DrainabilityModel::Cone::below(const Vec3& point) const {
     const Vec3 v{point[0] - apex[0], point[1] - apex[1], point[2] - apex[2]};
     const double rise = -dot(v, gravity);
     const double across_squared = std::max(0.0, dot(v, v) - rise * rise);
@@ -327,28 +327,57 @@ bool DrainabilityModel::Cone::below(const Vec3& point) const {
 
 double DrainabilityModel::total_volume() const { return powder_.total_volume(); }
 
-template <class Visit>
-void DrainabilityModel::walk_above_cone(const DrainHole& hole, const SampleGrid& grid, const SublevelForest& forest,
-                                        const Vec3& gravity, Visit visit) const {
-    if (!absorbing(hole, gravity)) return;
-    uint32_t a = grid.nearest(hole.center);
-    if (a == kNoSample) return;
-    const Cone crater = cone(hole, gravity);
-    while (true) {
-        if (!crater.below(powder_.position[grid.sample[a]])) visit(a);
-        if (forest.parent[a] == a) break;
-        a = forest.parent[a];
+DrainabilityModel::Chains DrainabilityModel::chains(const SampleGrid& grid, const SublevelForest& forest,
+                                                    const std::vector<uint32_t>& cavity) const {
+    const size_t n = grid.size();
+    Chains result;
+    result.rank.resize(n);
+    result.run_end.resize(n);
+    result.after_run.resize(n);
+    result.by_rank.resize(patches_.cavity_count);
+    for (uint32_t a : forest.order) {
+        result.rank[a] = uint32_t(result.by_rank[cavity[a]].size());
+        result.by_rank[cavity[a]].push_back(grid.sample[a]);
     }
+    // From the highest down, so a parent's run is known before its child's.
+    for (auto at = forest.order.rbegin(); at != forest.order.rend(); ++at) {
+        const uint32_t a = *at, parent = forest.parent[a];
+        const bool inside = parent != a && cavity[parent] == cavity[a];
+        if (inside && result.rank[parent] == result.rank[a] + 1) {
+            result.run_end[a] = result.run_end[parent];
+            result.after_run[a] = result.after_run[parent];
+        } else {
+            result.run_end[a] = result.rank[a] + 1;
+            result.after_run[a] = inside ? parent : kNoSample;
+        }
+    }
+    return result;
+}
+
+std::vector<uint64_t> DrainabilityModel::above_cone(const DrainHole& hole, uint32_t source, const Chains& chains,
+                                                    const std::vector<uint32_t>& cavity, const Vec3& gravity) const {
+    std::vector<uint64_t> bits;
+    if (source == kNoSample || cavity[source] != hole.cavity || !absorbing(hole, gravity)) return bits;
+    const std::vector<uint32_t>& sample = chains.by_rank[hole.cavity];
+    bits.assign((sample.size() + 63) / 64, 0);
+    const Cone crater = cone(hole, gravity);
+    uint64_t any = 0;
+    for (uint32_t a = source; a != kNoSample; a = chains.after_run[a])
+        for (uint32_t r = chains.rank[a]; r < chains.run_end[a]; ++r) {
+            const uint64_t above = crater.below(powder_.position[sample[r]]) ? 0 : 1;
+            bits[r >> 6] |= above << (r & 63);
+            any |= above;
+        }
+    if (!any) bits.clear();
+    return bits;
 }
 
 template <class Visit>
-void DrainabilityModel::walk_above_surface(const DrainHole& hole, size_t turn, Visit visit) const {
+void DrainabilityModel::walk_above_surface(const DrainHole& hole, uint32_t source, size_t turn, Visit visit) const {
     const Vec3& gravity = turns_[turn].gravity;
     const SublevelForest& forest = later_forests_[turn];
     const Relief& relief = later_relief_[turn];
-    if (!absorbing(hole, gravity)) return;
-    const uint32_t source = later_grid_.nearest(hole.center);
-    if (source == kNoSample) return;
+    if (source == kNoSample || !absorbing(hole, gravity)) return;
     // Powder can drain only if it reaches the mouth without climbing (the
     // source's ancestors) and lies above the crater's cone; past the highest
     // such sample nothing more drains.
@@ -423,37 +452,43 @@ std::vector<uint32_t> words_before(const std::vector<uint64_t>& bits) {
 DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole, Crater crater) const {
     Reach result;
     result.cavity = hole.cavity;
-    result.first.assign((first_grid_.size() + 63) / 64, 0);
-    walk_above_cone(hole, first_grid_, first_forest_, first_.gravity, [&](uint32_t a) { set_bit(result.first, a); });
+    result.first = above_cone(hole, first_grid_.nearest(hole.center), first_chains_, first_cavity_, first_.gravity);
     result.later.resize(turns_.size());
+    const uint32_t source = later_grid_.nearest(hole.center);
     const size_t words = (size_t(later_count_[hole.cavity]) + 63) / 64;
-    for (size_t k = 0; k < turns_.size(); ++k) {
-        auto drained = [&](uint32_t a) {
-            if (result.later[k].empty()) result.later[k].assign(words, 0);
-            set_bit(result.later[k], later_cavity_rank_[k][a]);
-        };
+    for (size_t k = 0; k < turns_.size(); ++k)
         if (crater == Crater::cone)
-            walk_above_cone(hole, later_grid_, later_forests_[k], turns_[k].gravity, drained);
+            result.later[k] = above_cone(hole, source, later_chains_[k], later_cavity_, turns_[k].gravity);
         else
-            walk_above_surface(hole, k, drained);
-    }
+            walk_above_surface(hole, source, k, [&](uint32_t a) {
+                if (result.later[k].empty()) result.later[k].assign(words, 0);
+                set_bit(result.later[k], later_chains_[k].rank[a]);
+            });
     return result;
 }
 
 DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& holes, Crater crater) const {
     std::vector<Reach> reaches(holes.size());
     tbb::parallel_for(size_t(0), holes.size(), [&](size_t h) { reaches[h] = reach(holes[h], crater); });
+    std::vector<const Reach*> pointers;
+    for (const Reach& r : reaches) pointers.push_back(&r);
+    return drain(holes, pointers);
+}
+
+DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& holes,
+                                                  const std::vector<const Reach*>& reaches) const {
     Drain result;
     result.holes = holes;
-    result.first.assign((first_grid_.size() + 63) / 64, 0);
+    result.first.resize(patches_.cavity_count);
+    for (uint32_t c = 0; c < patches_.cavity_count; ++c) result.first[c].assign((first_count_[c] + 63) / 64, 0);
     result.later.assign(turns_.size(), std::vector<std::vector<uint64_t>>(patches_.cavity_count));
-    for (const Reach& r : reaches) {
-        for (size_t w = 0; w < r.first.size(); ++w) result.first[w] |= r.first[w];
+    for (const Reach* r : reaches) {
+        for (size_t w = 0; w < r->first.size(); ++w) result.first[r->cavity][w] |= r->first[w];
         for (size_t k = 0; k < turns_.size(); ++k) {
-            if (r.later[k].empty()) continue;
-            std::vector<uint64_t>& bits = result.later[k][r.cavity];
-            if (bits.empty()) bits.assign(r.later[k].size(), 0);
-            for (size_t w = 0; w < bits.size(); ++w) bits[w] |= r.later[k][w];
+            if (r->later[k].empty()) continue;
+            std::vector<uint64_t>& bits = result.later[k][r->cavity];
+            if (bits.empty()) bits.assign(r->later[k].size(), 0);
+            for (size_t w = 0; w < bits.size(); ++w) bits[w] |= r->later[k][w];
         }
     }
     result.later_before.resize(turns_.size());
@@ -463,18 +498,16 @@ DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& 
             if (!result.later[k][c].empty()) result.later_before[k][c] = words_before(result.later[k][c]);
     }
     result.retained_first.assign(patches_.cavity_count, 0);
-    for (size_t a = 0; a < first_grid_.size(); ++a) {
-        if (bit(result.first, a))
-            result.drained_first_volume += powder_.sample_volume;
-        else
-            ++result.retained_first[first_cavity_[a]];
-    }
     result.residual_per_cavity.assign(patches_.cavity_count, 0.0);
-    for (uint32_t c = 0; c < patches_.cavity_count; ++c)
+    for (uint32_t c = 0; c < patches_.cavity_count; ++c) {
+        const uint32_t drained = words_before(result.first[c]).back();
+        result.drained_first_volume += double(drained) * powder_.sample_volume;
+        result.retained_first[c] = first_count_[c] - drained;
         if (first_count_[c] > 0)
             result.residual_per_cavity[c] =
                 later_residual_share(c, double(result.retained_first[c]) / double(first_count_[c]), result, nullptr) *
                 double(first_count_[c]) * powder_.sample_volume;
+    }
     return result;
 }
 
@@ -486,7 +519,7 @@ double DrainabilityModel::residual_with(const Drain& drain, const Reach& extra) 
     if (first_count_[c] == 0) return others;
     size_t fresh = 0;
     for (size_t w = 0; w < extra.first.size(); ++w)
-        fresh += size_t(__builtin_popcountll(extra.first[w] & ~drain.first[w]));
+        fresh += size_t(__builtin_popcountll(extra.first[w] & ~drain.first[c][w]));
     const double share = double(drain.retained_first[c] - fresh) / double(first_count_[c]);
     return others + later_residual_share(c, share, drain, &extra) * double(first_count_[c]) * powder_.sample_volume;
 }
@@ -542,8 +575,9 @@ double DrainabilityModel::later_residual_share(uint32_t cavity, double start, co
     return residual[kPileLevels];
 }
 
-DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes) const {
-    const Drain drained = drain(holes);
+DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes) const { return evaluate(drain(holes)); }
+
+DrainEvaluation DrainabilityModel::evaluate(const Drain& drained) const {
     DrainEvaluation result;
     result.total_volume = powder_.total_volume();
     result.drained_first_volume = drained.drained_first_volume;
@@ -558,7 +592,7 @@ DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes)
             const uint32_t a = patch_sample_[j];
             if (a == kNoSample) continue;
             const std::vector<uint64_t>& bits = drained.later[k][later_cavity_[a]];
-            if (!bits.empty() && bit(bits, later_cavity_rank_[k][a])) capture[k][j] = 1.0f;
+            if (!bits.empty() && bit(bits, later_chains_[k].rank[a])) capture[k][j] = 1.0f;
         }
     Eigen::VectorXd leave;
     const SparseMatrix captured = captured_part(turns_, n, capture, &leave);

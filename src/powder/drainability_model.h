@@ -98,9 +98,9 @@ public:
     //! (the prediction), or above the crater's cone (more, and far cheaper
     //! to find: the hole search's objective).
     enum class Crater { surface, cone };
-    //! What one hole drains alone: bits over the first turn's samples, and
-    //! per turn (empty where it drains nothing) over its cavity's later-turn
-    //! samples, lowest first.
+    //! What one hole drains alone: bits over its cavity's first-turn
+    //! samples, and per turn over its cavity's later-turn samples, lowest
+    //! first (each empty where it drains nothing).
     struct Reach {
         uint32_t cavity = 0;
         std::vector<uint64_t> first;
@@ -110,7 +110,8 @@ public:
     //! What a hole set drains, turn by turn (for incremental evaluation).
     struct Drain {
         std::vector<DrainHole> holes;
-        std::vector<uint64_t> first;
+        //! Per cavity: bits of the first-turn samples drained, lowest first.
+        std::vector<std::vector<uint64_t>> first;
         //! Per turn and cavity: bits of the drained samples, lowest first
         //! (empty: none), and the set bits before each word.
         std::vector<std::vector<std::vector<uint64_t>>> later;
@@ -120,9 +121,15 @@ public:
         double drained_first_volume = 0.0;
     };
     Drain drain(const std::vector<DrainHole>& holes, Crater crater = Crater::surface) const;
+    //! The same from the holes' reaches (`reaches[h]` is `holes[h]`'s), so
+    //! a search that has them does not walk again.
+    Drain drain(const std::vector<DrainHole>& holes, const std::vector<const Reach*>& reaches) const;
     //! Residual volume (mm³) of `drain`'s holes plus the hole of `extra`,
     //! without changing `drain`. Thread-safe.
     double residual_with(const Drain& drain, const Reach& extra) const;
+    //! evaluate(holes) from what the holes drain by the surface of repose
+    //! (drain(holes, Crater::surface), or the same from their reaches).
+    DrainEvaluation evaluate(const Drain& drained) const;
     double total_volume() const;
 
     //! Whether powder can leave through the hole's tunnel for `gravity`.
@@ -151,15 +158,28 @@ private:
         std::vector<float> height, floor;
     };
     Relief later_relief(const Vec3& gravity) const;
-    //! Both call `visit(sample)` for each sample that drains through `hole`:
-    //! above its cone of repose, of `grid` for `gravity` (`forest` is the
-    //! grid's for that gravity); or above the surface of repose it leaves,
-    //! of the later-turn grid for turn `turn`.
+    //! A sublevel forest's ancestor chains as runs of samples of consecutive
+    //! ranks within their cavity (lowest first), so that a walk up a chain
+    //! reads its samples in order: the chain from sample a begins with the
+    //! samples of ranks rank[a] to run_end[a] − 1 and goes on from
+    //! after_run[a] (kNoSample: it ends there, at the root or where the
+    //! chain would leave the cavity).
+    struct Chains {
+        std::vector<uint32_t> rank, run_end, after_run;
+        //! Per cavity: the powder samples by rank.
+        std::vector<std::vector<uint32_t>> by_rank;
+    };
+    Chains chains(const SampleGrid& grid, const SublevelForest& forest, const std::vector<uint32_t>& cavity) const;
+    //! Bits (by rank in the hole's cavity) of the samples that drain through
+    //! `hole` above its cone of repose: of the chain from `source` (the
+    //! sample nearest the hole, kNoSample if none) for `gravity`. Empty if none.
+    std::vector<uint64_t> above_cone(const DrainHole& hole, uint32_t source, const Chains& chains,
+                                     const std::vector<uint32_t>& cavity, const Vec3& gravity) const;
+    //! Calls `visit(sample)` for each sample that drains through `hole`
+    //! above the surface of repose it leaves, of the later-turn grid for
+    //! turn `turn` (`source`: the grid's sample nearest the hole).
     template <class Visit>
-    void walk_above_cone(const DrainHole& hole, const SampleGrid& grid, const SublevelForest& forest,
-                         const Vec3& gravity, Visit visit) const;
-    template <class Visit>
-    void walk_above_surface(const DrainHole& hole, size_t turn, Visit visit) const;
+    void walk_above_surface(const DrainHole& hole, uint32_t source, size_t turn, Visit visit) const;
     //! Expected residual share of cavity `cavity` after the later turns from
     //! a pile share `start` after the first, with what `drain` (and `extra`,
     //! if not null) drains.
@@ -175,14 +195,13 @@ private:
     SampleGrid first_grid_, later_grid_;
     //! Per later-turn sample: the samples of the 26 cells around it (see sample_links in the .cpp).
     std::vector<std::array<uint32_t, 26>> later_links_;
-    SublevelForest first_forest_;
     std::vector<SublevelForest> later_forests_;
+    Chains first_chains_;
+    std::vector<Chains> later_chains_;
     std::vector<Relief> later_relief_;
     //! Per sample of each grid: its cavity. Per cavity: sample count of each grid.
     std::vector<uint32_t> first_cavity_, later_cavity_;
     std::vector<uint32_t> first_count_, later_count_;
-    //! Per turn, per later-turn sample: its rank within its cavity, lowest first.
-    std::vector<std::vector<uint32_t>> later_cavity_rank_;
     //! Per patch: the later-turn sample nearest its site (kNoSample if none).
     std::vector<uint32_t> patch_sample_;
     //! I − ρ Σ_g w_g S(g), the turn chain without holes (Eigen, defined in the .cpp).

@@ -56,14 +56,20 @@ public:
         }
         bound_.assign(representatives_.size(), std::numeric_limits<double>::infinity());
         reach_.resize(candidates.size());
+        surface_reach_.resize(candidates.size());
     }
 
-    //! Residuals of `sites` (candidate indices) added to `drain`'s holes, in
-    //! parallel; each candidate's reach is computed once and kept.
+    //! What the candidates `chosen` drain together, by the search's
+    //! objective (kCrater) or by the prediction's (the surface of repose).
+    //! Each candidate's reach for either is computed once and kept.
+    DrainabilityModel::Drain drain(const std::vector<size_t>& chosen) { return drain(chosen, kCrater, reach_); }
+    DrainabilityModel::Drain predicted_drain(const std::vector<size_t>& chosen) {
+        return drain(chosen, DrainabilityModel::Crater::surface, surface_reach_);
+    }
+
+    //! Residuals of `sites` (candidate indices) added to `drain`'s holes, in parallel.
     std::vector<double> residuals_with(const DrainabilityModel::Drain& drain, const std::vector<size_t>& sites) {
-        tbb::parallel_for(size_t(0), sites.size(), [&](size_t k) {
-            if (!reach_[sites[k]]) reach_[sites[k]] = std::make_unique<DrainabilityModel::Reach>(model_.reach(candidates_[sites[k]], kCrater));
-        });
+        compute_reaches(sites, kCrater, reach_);
         std::vector<double> residual(sites.size());
         tbb::parallel_for(size_t(0), sites.size(),
                           [&](size_t k) { residual[k] = model_.residual_with(drain, *reach_[sites[k]]); });
@@ -129,13 +135,31 @@ public:
     }
 
 private:
+    using Reaches = std::vector<std::unique_ptr<const DrainabilityModel::Reach>>;
+    void compute_reaches(const std::vector<size_t>& sites, DrainabilityModel::Crater crater, Reaches& reaches) const {
+        tbb::parallel_for(size_t(0), sites.size(), [&](size_t k) {
+            if (!reaches[sites[k]])
+                reaches[sites[k]] = std::make_unique<DrainabilityModel::Reach>(model_.reach(candidates_[sites[k]], crater));
+        });
+    }
+    DrainabilityModel::Drain drain(const std::vector<size_t>& chosen, DrainabilityModel::Crater crater, Reaches& reaches) {
+        compute_reaches(chosen, crater, reaches);
+        std::vector<DrainHole> holes;
+        std::vector<const DrainabilityModel::Reach*> reached;
+        for (size_t c : chosen) {
+            holes.push_back(candidates_[c]);
+            reached.push_back(reaches[c].get());
+        }
+        return model_.drain(holes, reached);
+    }
+
     const DrainabilityModel& model_;
     const std::vector<DrainHole>& candidates_;
     const HoleSearchOptions& options_;
     std::vector<size_t> representatives_;
     std::vector<std::vector<size_t>> members_;
     std::vector<double> bound_;  //!< per representative: its last gain (an upper bound on the next)
-    std::vector<std::unique_ptr<const DrainabilityModel::Reach>> reach_;  //!< per candidate, once needed
+    Reaches reach_, surface_reach_;  //!< per candidate, once needed
 };
 
 }  // namespace
@@ -146,7 +170,8 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     if (options.hole_count < 0) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the hole count cannot be negative");
     Search search(model, candidates, options);
     HoleSearchResult result;
-    DrainabilityModel::Drain drain = model.drain(result.holes, kCrater);
+    std::vector<size_t> chosen;  // the holes, as candidates
+    DrainabilityModel::Drain drain = search.drain(chosen);
     double residual = 0.0;
     for (double v : drain.residual_per_cavity) residual += v;
     const double total = model.total_volume();
@@ -159,9 +184,9 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
 
     std::vector<int> count(cavity_count, 0);
     auto add = [&](const Choice& choice) {
-        result.holes.push_back(candidates[choice.candidate]);
+        chosen.push_back(choice.candidate);
         ++count[candidates[choice.candidate].cavity];
-        drain = model.drain(result.holes, kCrater);
+        drain = search.drain(chosen);
         residual = choice.residual;
     };
     // Adds the best hole anywhere; false when there is none, or (automatic)
@@ -179,8 +204,8 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
             if (!choice.found) break;
             add(choice);
         }
-    while (int(result.holes.size()) < ceiling) {
-        progress.update(double(result.holes.size()) / double(ceiling + 1));
+    while (int(chosen.size()) < ceiling) {
+        progress.update(double(chosen.size()) / double(ceiling + 1));
         if (automatic && residual < options.target_residual_fraction * total) break;
         if (!add_best()) break;
     }
@@ -188,18 +213,17 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     // Local swaps: move one hole to a better site nearby while that helps.
     for (int pass = 0; pass < 2; ++pass) {
         bool improved = false;
-        for (size_t h = 0; h < result.holes.size(); ++h) {
+        for (size_t h = 0; h < chosen.size(); ++h) {
             progress.check();
-            std::vector<DrainHole> others = result.holes;
-            const DrainHole moved = others[h];
+            std::vector<size_t> others = chosen;
             others.erase(others.begin() + long(h));
+            const DrainHole& moved = candidates[chosen[h]];
             const int only_cavity = count[moved.cavity] <= per_cavity ? int(moved.cavity) : -1;
-            const Choice choice = search.best_move(model.drain(others, kCrater), moved, only_cavity);
+            const Choice choice = search.best_move(search.drain(others), moved, only_cavity);
             if (!choice.found || choice.residual >= residual - negligible) continue;
             --count[moved.cavity];
             ++count[candidates[choice.candidate].cavity];
-            others.insert(others.begin() + long(h), candidates[choice.candidate]);
-            result.holes = std::move(others);
+            chosen[h] = choice.candidate;
             residual = choice.residual;
             ++result.swaps;
             improved = true;
@@ -209,13 +233,14 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     // The prediction is the surface of repose's, which keeps more than the
     // cone the search compares: in automatic mode holes go on being added
     // (by the cone's gain) while the prediction is over the target.
-    result.evaluation = model.evaluate(result.holes);
-    while (automatic && int(result.holes.size()) < ceiling &&
+    result.evaluation = model.evaluate(search.predicted_drain(chosen));
+    while (automatic && int(chosen.size()) < ceiling &&
            result.evaluation.residual_volume >= options.target_residual_fraction * total) {
         progress.check();
         if (!add_best()) break;
-        result.evaluation = model.evaluate(result.holes);
+        result.evaluation = model.evaluate(search.predicted_drain(chosen));
     }
+    for (size_t c : chosen) result.holes.push_back(candidates[c]);
     progress.update(1.0);
     return result;
 }
