@@ -219,25 +219,39 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
 
     const size_t n = patches.size();
     const double weight = 1.0 / double(turns.size());
-    std::vector<Eigen::Triplet<double>> entries;
-    for (const OrientationFlow& flow : turns)
-        for (size_t i = 0; i < n; ++i)
-            for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e)
-                entries.emplace_back(int(i), int(flow.settle.column[e]), weight * flow.settle.weight[e]);
-    SparseMatrix averaged(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    averaged.setFromTriplets(entries.begin(), entries.end());
-    // Moves of less than kChainPrune of a patch's powder stay put instead:
-    // the chain keeps a fraction of its entries, and the solve speeds up as much.
-    entries.clear();
-    for (Eigen::Index i = 0; i < averaged.outerSize(); ++i) {
-        double stays = 1.0;
-        for (SparseMatrix::InnerIterator entry(averaged, i); entry; ++entry)
-            if (entry.value() >= kChainPrune && entry.col() != i) {
-                entries.emplace_back(int(i), int(entry.col()), -options.effort * entry.value());
-                stays -= entry.value();
+    // Row by row (in parallel): the moves averaged over the turns (summed
+    // in turn order), by column. Moves of less than kChainPrune of a
+    // patch's powder stay put instead: the chain keeps a fraction of its
+    // entries, and the solve speeds up as much.
+    std::vector<std::vector<Eigen::Triplet<double>>> rows(n);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& range) {
+        std::vector<double> moved(n, 0.0);
+        std::vector<char> seen(n, 0);
+        std::vector<uint32_t> columns;
+        for (size_t i = range.begin(); i < range.end(); ++i) {
+            for (const OrientationFlow& flow : turns)
+                for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e) {
+                    const uint32_t j = flow.settle.column[e];
+                    if (!seen[j]) columns.push_back(j);
+                    seen[j] = 1;
+                    moved[j] += weight * flow.settle.weight[e];
+                }
+            std::sort(columns.begin(), columns.end());
+            double stays = 1.0;
+            for (uint32_t j : columns) {
+                if (moved[j] >= kChainPrune && j != i) {
+                    rows[i].emplace_back(int(i), int(j), -options.effort * moved[j]);
+                    stays -= moved[j];
+                }
+                moved[j] = 0.0;
+                seen[j] = 0;
             }
-        entries.emplace_back(int(i), int(i), 1.0 - options.effort * std::max(0.0, stays));
-    }
+            columns.clear();
+            rows[i].emplace_back(int(i), int(i), 1.0 - options.effort * std::max(0.0, stays));
+        }
+    });
+    std::vector<Eigen::Triplet<double>> entries;
+    for (const auto& row : rows) entries.insert(entries.end(), row.begin(), row.end());
     auto chain = std::make_unique<TurnChain>();
     chain->base.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
     chain->base.setFromTriplets(entries.begin(), entries.end());
@@ -456,7 +470,7 @@ DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole, Crater 
     result.later.resize(turns_.size());
     const uint32_t source = later_grid_.nearest(hole.center);
     const size_t words = (size_t(later_count_[hole.cavity]) + 63) / 64;
-    for (size_t k = 0; k < turns_.size(); ++k)
+    tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
         if (crater == Crater::cone)
             result.later[k] = above_cone(hole, source, later_chains_[k], later_cavity_, turns_[k].gravity);
         else
@@ -464,6 +478,7 @@ DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole, Crater 
                 if (result.later[k].empty()) result.later[k].assign(words, 0);
                 set_bit(result.later[k], later_chains_[k].rank[a]);
             });
+    });
     return result;
 }
 
