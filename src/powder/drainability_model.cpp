@@ -377,10 +377,13 @@ std::vector<uint64_t> DrainabilityModel::above_cone(const DrainHole& hole, uint3
     const Cone crater = cone(hole, gravity);
     uint64_t any = 0;
     for (uint32_t a = source; a != kNoSample; a = chains.after_run[a])
-        for (uint32_t r = chains.rank[a]; r < chains.run_end[a]; ++r) {
-            const uint64_t above = crater.below(powder_.position[sample[r]]) ? 0 : 1;
-            bits[r >> 6] |= above << (r & 63);
-            any |= above;
+        for (uint32_t r = chains.rank[a], end = chains.run_end[a]; r < end;) {
+            // A word at a time, in a register: the tests of a run do not wait on each other.
+            const uint32_t word_end = std::min(end, (r | 63) + 1);
+            uint64_t word = 0;
+            for (; r < word_end; ++r) word |= uint64_t(!crater.below(powder_.position[sample[r]])) << (r & 63);
+            bits[(r - 1) >> 6] |= word;
+            any |= word;
         }
     if (!any) bits.clear();
     return bits;
@@ -571,17 +574,26 @@ double DrainabilityModel::later_residual_share(uint32_t cavity, double start, co
         }
     }
     const size_t moving = after.size() / (kPileLevels + 1);
+    // Each pile after a turn as the level below it and its fraction of the
+    // step above, by level before the turn, then turn.
+    std::vector<int> low(after.size());
+    std::vector<double> fraction(after.size());
+    for (size_t k = 0; k < moving; ++k)
+        for (size_t b = 0; b <= kPileLevels; ++b) {
+            const double u = after[k * (kPileLevels + 1) + b];
+            const size_t i = b * moving + k;
+            low[i] = std::min(int(u), kPileLevels - 1);
+            fraction[i] = u - low[i];
+        }
     const double turns = double(turns_.size());
     std::vector<double> residual(kPileLevels + 1), next(kPileLevels + 1);
     for (int b = 0; b <= kPileLevels; ++b) residual[size_t(b)] = start * double(b) / kPileLevels;
     for (int t = 0; t < later_turns_; ++t) {
         for (int b = 0; b <= kPileLevels; ++b) {
             double sum = double(still) * residual[size_t(b)];
-            for (size_t k = 0; k < moving; ++k) {
-                const double u = after[k * (kPileLevels + 1) + size_t(b)];
-                const int low = std::min(int(u), kPileLevels - 1);
-                const double f = u - low;
-                sum += (1.0 - f) * residual[size_t(low)] + f * residual[size_t(low + 1)];
+            for (size_t i = size_t(b) * moving; i < size_t(b + 1) * moving; ++i) {
+                const double f = fraction[i];
+                sum += (1.0 - f) * residual[size_t(low[i])] + f * residual[size_t(low[i] + 1)];
             }
             next[size_t(b)] = sum / turns;
         }
