@@ -1,6 +1,7 @@
 //! Hollow test parts as level sets with known cavities, shared by the powder
-//! tests: a hollow sphere, two separate hollow spheres, and a box cavity with
-//! a raised shelf that has a pocket (a well) sunk into it. Each gives the part
+//! tests: a hollow sphere, two separate hollow spheres, a box cavity with
+//! a raised shelf that has a pocket (a well) sunk into it, and a shaft
+//! behind a long flat tube. Each gives the part
 //! (negative inside, cavity included), its cavity (negative inside the cavity)
 //! and the shell (negative in the wall) = part minus cavity.
 #pragma once
@@ -56,14 +57,8 @@ struct Pocket {
     Vec3 lo{6, -5, 4}, hi{14, 5, 10};
 };
 
-//! A cavity (wall `wall` all round, every box of the cavity grown by it) made
-//! of a main room x ∈ [-16, 16], y ∈ [-8, 8], z ∈ [0, 20] whose floor rises
-//! to a shelf at z = 10 for x > 4, and the Pocket sunk into the shelf.
-inline HollowPart shelf_with_pocket(double wall, double voxel) {
-    openvdb::initialize();
-    const Pocket pocket;
-    const std::vector<std::pair<Vec3, Vec3>> rooms = {
-        {{-16, -8, 0}, {4, 8, 20}}, {{4, -8, 10}, {16, 8, 20}}, {pocket.lo, {pocket.hi[0], pocket.hi[1], 10.5}}};
+//! A cavity made of boxes, with a wall `wall` all round (every box grown by it).
+inline HollowPart boxes_cavity(const std::vector<std::pair<Vec3, Vec3>>& rooms, double wall, double voxel) {
     openvdb::FloatGrid::Ptr cavity, part;
     for (const auto& [lo, hi] : rooms) {
         auto room = box(lo, hi, voxel);
@@ -77,6 +72,27 @@ inline HollowPart shelf_with_pocket(double wall, double voxel) {
         }
     }
     return finish(part, cavity);
+}
+
+//! A shaft x ∈ [-12, 0], y ∈ [-6, 6], z ∈ [-20, 11] whose top opens into a
+//! flat tube 3 mm high running to x = 30 (y ∈ [-3, 3], z ∈ [8, 11]).
+//! Turned upside down (gravity +z), a hole on top of the tube's far end
+//! drains the tube only as far as the slope of repose reaches (3 / tan θ_r
+//! ≈ 4 mm at 35°): the powder beyond plugs the tube and holds the shaft.
+inline HollowPart shaft_behind_flat_tube(double wall, double voxel) {
+    openvdb::initialize();
+    return boxes_cavity({{{-12, -6, -20}, {0, 6, 11}}, {{-0.5, -3, 8}, {30, 3, 11}}}, wall, voxel);
+}
+
+//! A cavity (wall `wall` all round, every box of the cavity grown by it) made
+//! of a main room x ∈ [-16, 16], y ∈ [-8, 8], z ∈ [0, 20] whose floor rises
+//! to a shelf at z = 10 for x > 4, and the Pocket sunk into the shelf.
+inline HollowPart shelf_with_pocket(double wall, double voxel) {
+    openvdb::initialize();
+    const Pocket pocket;
+    return boxes_cavity(
+        {{{-16, -8, 0}, {4, 8, 20}}, {{4, -8, 10}, {16, 8, 20}}, {pocket.lo, {pocket.hi[0], pocket.hi[1], 10.5}}}, wall,
+        voxel);
 }
 
 }  // namespace fabvdb::test
