@@ -709,6 +709,12 @@ std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained) const
     return residual;
 }
 
+double DrainabilityModel::predicted_residual(const Drain& drained) const {
+    double residual = 0.0;
+    for (double v : kept_in_place(drained)) residual += v;
+    return residual;
+}
+
 DrainEvaluation DrainabilityModel::evaluate(const Drain& drained) const {
     DrainEvaluation result;
     result.total_volume = powder_.total_volume();

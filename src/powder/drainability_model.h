@@ -152,6 +152,8 @@ public:
     //! evaluate(holes) from what the holes drain by the surface of repose
     //! (drain(holes, Crater::surface), or the same from their reaches).
     DrainEvaluation evaluate(const Drain& drained) const;
+    //! evaluate(drained).residual_volume alone (mm³), without the per-patch solve.
+    double predicted_residual(const Drain& drained) const;
     double total_volume() const;
 
     //! Whether powder can leave through the hole's tunnel for `gravity`.

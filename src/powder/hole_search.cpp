@@ -233,13 +233,14 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     // The prediction is the surface of repose's, which keeps more than the
     // cone the search compares: in automatic mode holes go on being added
     // (by the cone's gain) while the prediction is over the target.
-    result.evaluation = model.evaluate(search.predicted_drain(chosen));
+    DrainabilityModel::Drain predicted = search.predicted_drain(chosen);
     while (automatic && int(chosen.size()) < ceiling &&
-           result.evaluation.residual_volume >= options.target_residual_fraction * total) {
+           model.predicted_residual(predicted) >= options.target_residual_fraction * total) {
         progress.check();
         if (!add_best()) break;
-        result.evaluation = model.evaluate(search.predicted_drain(chosen));
+        predicted = search.predicted_drain(chosen);
     }
+    result.evaluation = model.evaluate(predicted);
     for (size_t c : chosen) result.holes.push_back(candidates[c]);
     progress.update(1.0);
     return result;
