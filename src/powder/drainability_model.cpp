@@ -217,13 +217,10 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     later_forests_.resize(turns.size());
     later_relief_.resize(turns.size());
     later_chains_.resize(turns.size());
-    later_order_.resize(turns.size());
     tbb::parallel_for(size_t(0), turns.size(), [&](size_t k) {
         later_relief_[k] = later_relief(turns[k].gravity);
         later_forests_[k] = sublevel_forest(later_grid_.neighbours, later_relief_[k].height);
         later_chains_[k] = chains(later_grid_, later_forests_[k], later_cavity_);
-        later_order_[k].resize(patches.cavity_count);
-        for (uint32_t a : later_forests_[k].order) later_order_[k][later_cavity_[a]].push_back(a);
     });
     // The prediction's routines: later turns drawn uniformly from the set
     // (a fixed 64-bit Mersenne twister, no library distribution: the same on
@@ -232,12 +229,10 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     routines_.resize(kRoutines);
     for (std::vector<uint32_t>& routine : routines_)
         for (int t = 0; t < later_turns_; ++t) routine.push_back(uint32_t(generator() % turns.size()));
-    // Each later-turn sample's rank among its cavity's first-turn samples.
-    std::vector<uint32_t> first_index(powder.position.size(), kNoSample);
-    for (size_t a = 0; a < first_grid_.size(); ++a) first_index[first_grid_.sample[a]] = uint32_t(a);
-    later_first_rank_.resize(later_grid_.size());
-    for (size_t a = 0; a < later_grid_.size(); ++a)
-        later_first_rank_[a] = first_chains_.rank[first_index[later_grid_.sample[a]]];
+    // Each powder sample's rank among its cavity's first-turn samples (the
+    // first-turn grid holds every sample).
+    first_rank_.resize(powder.position.size());
+    for (size_t a = 0; a < first_grid_.size(); ++a) first_rank_[first_grid_.sample[a]] = first_chains_.rank[a];
     patch_sample_.resize(patches.size());
     tbb::parallel_for(size_t(0), patches.size(), [&](size_t j) { patch_sample_[j] = later_grid_.nearest(patches.site[j]); });
 
@@ -512,17 +507,15 @@ DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole, Crater 
     tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
         if (crater == Crater::cone)
             result.later[k] = above_cone(hole, source, later_chains_[k], later_cavity_, turns_[k].gravity);
-        else
+        else {
+            auto mark = [&](std::vector<uint64_t>& bits, uint32_t a) {
+                if (bits.empty()) bits.assign(words, 0);
+                set_bit(bits, later_chains_[k].rank[a]);
+            };
             walk_above_surface(
-                hole, source, k,
-                [&](uint32_t a) {
-                    if (result.later[k].empty()) result.later[k].assign(words, 0);
-                    set_bit(result.later[k], later_chains_[k].rank[a]);
-                },
-                [&](uint32_t a) {
-                    if (result.later_rim[k].empty()) result.later_rim[k].assign(words, 0);
-                    set_bit(result.later_rim[k], later_chains_[k].rank[a]);
-                });
+                hole, source, k, [&](uint32_t a) { mark(result.later[k], a); },
+                [&](uint32_t a) { mark(result.later_rim[k], a); });
+        }
     });
     return result;
 }
@@ -652,10 +645,10 @@ std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained) const
     for (uint32_t c = 0; c < patches_.cavity_count; ++c) {
         const double retained = double(drained.retained_first[c]) * powder_.sample_volume;
         // The later-turn samples the first turn leaves.
-        const std::vector<uint32_t>& samples = later_order_[0][c];
-        std::vector<double> start(later_grid_.size(), 0.0);
+        const std::vector<uint32_t>& samples = later_chains_[0].by_rank[c];
+        std::vector<double> start(powder_.position.size(), 0.0);
         double left = 0.0;
-        for (uint32_t a : samples) left += start[a] = bit(drained.first[c], later_first_rank_[a]) ? 0.0 : 1.0;
+        for (uint32_t a : samples) left += start[a] = bit(drained.first[c], first_rank_[a]) ? 0.0 : 1.0;
         if (left == 0.0) {
             residual[c] = retained;
             continue;
@@ -674,7 +667,7 @@ std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained) const
         tbb::parallel_for(size_t(0), routines_.size(), [&](size_t r) {
             std::vector<double> fill = start, out;
             for (uint32_t k : routines_[r]) {
-                const std::vector<uint32_t>& by_rank = later_order_[k][c];
+                const std::vector<uint32_t>& by_rank = later_chains_[k].by_rank[c];
                 // Each hole takes the powder above its surface of repose (a
                 // sample two holes drain goes to the lower), then the powder
                 // it took fills its crater's rim, lowest first, before leaving.

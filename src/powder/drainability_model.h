@@ -229,10 +229,8 @@ private:
     //! Per sample of each grid: its cavity. Per cavity: sample count of each grid.
     std::vector<uint32_t> first_cavity_, later_cavity_;
     std::vector<uint32_t> first_count_, later_count_;
-    //! Per later-turn sample: its rank among its cavity's first-turn samples.
-    std::vector<uint32_t> later_first_rank_;
-    //! Per turn and cavity: its later-turn samples lowest first.
-    std::vector<std::vector<std::vector<uint32_t>>> later_order_;
+    //! Per powder sample: its rank among its cavity's first-turn samples.
+    std::vector<uint32_t> first_rank_;
     //! The prediction's routines: the turn indices of each.
     std::vector<std::vector<uint32_t>> routines_;
     //! Per patch: the later-turn sample nearest its site (kNoSample if none).
