@@ -521,22 +521,21 @@ DrainabilityModel::Reach DrainabilityModel::reach(const DrainHole& hole, Crater 
 }
 
 DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& holes, Crater crater) const {
-    std::vector<Reach> reaches(holes.size());
-    tbb::parallel_for(size_t(0), holes.size(), [&](size_t h) { reaches[h] = reach(holes[h], crater); });
-    std::vector<const Reach*> pointers;
-    for (const Reach& r : reaches) pointers.push_back(&r);
-    return drain(holes, pointers);
+    std::vector<std::shared_ptr<const Reach>> reaches(holes.size());
+    tbb::parallel_for(size_t(0), holes.size(),
+                      [&](size_t h) { reaches[h] = std::make_shared<const Reach>(reach(holes[h], crater)); });
+    return drain(holes, reaches);
 }
 
 DrainabilityModel::Drain DrainabilityModel::drain(const std::vector<DrainHole>& holes,
-                                                  const std::vector<const Reach*>& reaches) const {
+                                                  const std::vector<std::shared_ptr<const Reach>>& reaches) const {
     Drain result;
     result.holes = holes;
     result.first.resize(patches_.cavity_count);
     for (uint32_t c = 0; c < patches_.cavity_count; ++c) result.first[c].assign((first_count_[c] + 63) / 64, 0);
     result.later.assign(turns_.size(), std::vector<std::vector<uint64_t>>(patches_.cavity_count));
-    for (const Reach* r : reaches) result.reaches.push_back(*r);
-    for (const Reach* r : reaches) {
+    result.reaches = reaches;
+    for (const auto& r : reaches) {
         for (size_t w = 0; w < r->first.size(); ++w) result.first[r->cavity][w] |= r->first[w];
         for (size_t k = 0; k < turns_.size(); ++k) {
             if (r->later[k].empty()) continue;
@@ -657,7 +656,7 @@ std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained) const
         std::vector<std::vector<size_t>> open(turns_.size());
         for (size_t k = 0; k < turns_.size(); ++k) {
             for (size_t h = 0; h < drained.reaches.size(); ++h)
-                if (drained.reaches[h].cavity == c && !drained.reaches[h].later[k].empty()) open[k].push_back(h);
+                if (drained.reaches[h]->cavity == c && !drained.reaches[h]->later[k].empty()) open[k].push_back(h);
             const Vec3& gravity = turns_[k].gravity;
             std::sort(open[k].begin(), open[k].end(), [&](size_t x, size_t y) {
                 return dot(drained.holes[x].center, gravity) > dot(drained.holes[y].center, gravity);
@@ -673,7 +672,7 @@ std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained) const
                 // it took fills its crater's rim, lowest first, before leaving.
                 out.assign(open[k].size(), 0.0);
                 for (size_t o = 0; o < open[k].size(); ++o) {
-                    const std::vector<uint64_t>& bits = drained.reaches[open[k][o]].later[k];
+                    const std::vector<uint64_t>& bits = drained.reaches[open[k][o]]->later[k];
                     for (size_t w = 0; w < bits.size(); ++w)
                         for (uint64_t word = bits[w]; word != 0; word &= word - 1) {
                             double& powder = fill[by_rank[(w << 6) + size_t(__builtin_ctzll(word))]];
@@ -683,7 +682,7 @@ std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained) const
                 }
                 const std::vector<uint64_t>& all = drained.later[k][c];
                 for (size_t o = 0; o < open[k].size(); ++o) {
-                    const std::vector<uint64_t>& rim = drained.reaches[open[k][o]].later_rim[k];
+                    const std::vector<uint64_t>& rim = drained.reaches[open[k][o]]->later_rim[k];
                     for (size_t w = 0; w < rim.size() && out[o] > 0.0; ++w)
                         for (uint64_t word = rim[w] & ~all[w]; word != 0 && out[o] > 0.0; word &= word - 1) {
                             double& powder = fill[by_rank[(w << 6) + size_t(__builtin_ctzll(word))]];

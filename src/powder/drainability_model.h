@@ -136,8 +136,9 @@ public:
         //! (empty: none), and the set bits before each word.
         std::vector<std::vector<std::vector<uint64_t>>> later;
         std::vector<std::vector<std::vector<uint32_t>>> later_before;
-        //! What each hole drains alone (`holes[h]`'s is `reaches[h]`).
-        std::vector<Reach> reaches;
+        //! What each hole drains alone (`holes[h]`'s is `reaches[h]`), shared
+        //! with whoever computed it.
+        std::vector<std::shared_ptr<const Reach>> reaches;
         std::vector<uint32_t> retained_first;  //!< per cavity: samples left after the first turn
         std::vector<double> residual_per_cavity;  //!< mm³
         double drained_first_volume = 0.0;
@@ -145,7 +146,7 @@ public:
     Drain drain(const std::vector<DrainHole>& holes, Crater crater = Crater::surface) const;
     //! The same from the holes' reaches (`reaches[h]` is `holes[h]`'s), so
     //! a search that has them does not walk again.
-    Drain drain(const std::vector<DrainHole>& holes, const std::vector<const Reach*>& reaches) const;
+    Drain drain(const std::vector<DrainHole>& holes, const std::vector<std::shared_ptr<const Reach>>& reaches) const;
     //! Residual volume (mm³) of `drain`'s holes plus the hole of `extra`,
     //! without changing `drain`. Thread-safe.
     double residual_with(const Drain& drain, const Reach& extra) const;

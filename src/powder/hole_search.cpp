@@ -135,20 +135,20 @@ public:
     }
 
 private:
-    using Reaches = std::vector<std::unique_ptr<const DrainabilityModel::Reach>>;
+    using Reaches = std::vector<std::shared_ptr<const DrainabilityModel::Reach>>;
     void compute_reaches(const std::vector<size_t>& sites, DrainabilityModel::Crater crater, Reaches& reaches) const {
         tbb::parallel_for(size_t(0), sites.size(), [&](size_t k) {
             if (!reaches[sites[k]])
-                reaches[sites[k]] = std::make_unique<DrainabilityModel::Reach>(model_.reach(candidates_[sites[k]], crater));
+                reaches[sites[k]] = std::make_shared<const DrainabilityModel::Reach>(model_.reach(candidates_[sites[k]], crater));
         });
     }
     DrainabilityModel::Drain drain(const std::vector<size_t>& chosen, DrainabilityModel::Crater crater, Reaches& reaches) {
         compute_reaches(chosen, crater, reaches);
         std::vector<DrainHole> holes;
-        std::vector<const DrainabilityModel::Reach*> reached;
+        Reaches reached;
         for (size_t c : chosen) {
             holes.push_back(candidates_[c]);
-            reached.push_back(reaches[c].get());
+            reached.push_back(reaches[c]);
         }
         return model_.drain(holes, reached);
     }
