@@ -87,6 +87,7 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     model_options.repose_radians = options.repose_radians;
     model_options.effort = options.effort;
     const DrainabilityModel model(plan.patches, turns, first, powder, model_options);
+    clock.lap("drainability model");
     HoleSearchOptions search = options.search;
     search.min_center_distance = 2.0 * options.hole_diameter;
     HoleSearchResult found = search_drain_holes(model, candidates, plan.patches.cavity_count, search, progress);
