@@ -385,7 +385,11 @@ typedef struct fabvdb_drain_options {
                                     ({"spheres": [{"center": [x,y,z], "radius": r}]}) or a closed
                                     mesh file: no hole opens in it. Borrowed. */
     const char* heatmap_path;    /* NULL (default), or a .ply file that receives the cavity
-                                    surface coloured by drainability (and a `quality` property) */
+                                    surface coloured by the share of the powder resting there at
+                                    the start that drains (a `quality` property, viridis colours
+                                    over 0..1); beside it STEM_left.ply (the powder left at the end,
+                                    mm³ per mm² of surface) and a PNG colour bar for each
+                                    (STEM.png, STEM_left.png). Same model as the prediction. */
 } fabvdb_drain_options;
 
 /* Fills *options with the defaults above and sets struct_size. NULL does
@@ -397,11 +401,18 @@ FABVDB_API void fabvdb_drain_options_init(fabvdb_drain_options* options);
  * shell (it has inward-facing shells around a void) is used as is. The holes
  * maximise the powder the drainability model drains (README "fabvdb drain");
  * each cavity gets its own. The report has holes[] ({center, axis, diameter,
- * cavity, depth}), predicted_residual_fraction, predicted_residual_mm3, the
- * same for the lowest-point baseline with as many holes (baseline_holes[],
- * baseline_residual_fraction, baseline_residual_mm3), cavity_volume_mm3,
- * cavities, patches, candidates, input_was_hollow, voxel_size and timings
- * (seconds per stage).
+ * cavity, depth}); predicted_residual_fraction and predicted_residual_mm3
+ * (the model's mean over random operator routines) and random_routines
+ * {routines, mean_fraction, std_fraction, min_fraction, max_fraction};
+ * routine[] (the recommended cleaning routine, first turn as printed: each
+ * {gravity, hole_down (index into holes[] or null), lowest_hole, tilt_degrees,
+ * tilt_axis, instruction}), routine_residual_fraction and routine_residual_mm3
+ * (the prediction under it); the lowest-point baseline with as many holes
+ * (baseline_holes[], baseline_residual_fraction, baseline_residual_mm3,
+ * baseline_routine_residual_fraction under its own routine); heatmap (with a
+ * heat-map path: the files, their ranges and the share that drains averaged
+ * by powder); cavity_volume_mm3, cavities, patches, candidates,
+ * input_was_hollow, voxel_size and timings (seconds per stage).
  * mesh: borrowed. options: borrowed; NULL means the defaults.
  * out_mesh: receives the drilled part (owned by the caller). out_report:
  * receives the report (owned by the caller); may be NULL if not wanted.
@@ -428,6 +439,10 @@ typedef struct fabvdb_powder_options {
     int turns;                   /* turns of the routine, the first included; default 10 */
     uint64_t seed;               /* draws the later turns from the orientations; default 1 */
     int slope_window;            /* cells over which a pile's slope is measured, 1 to 16; default 4 */
+    const char* routine_json;    /* NULL (default), or JSON text: a drain report (its routine[]
+                                    array of {gravity}) or an array of [x, y, z] gravities; the
+                                    routine replayed exactly, its first turn included, instead of
+                                    first_gravity and turns drawn with the seed. Borrowed. (since 0.2) */
 } fabvdb_powder_options;
 
 /* Fills *options with the defaults above. NULL does nothing. Thread-safe. (since 0.1) */
@@ -437,7 +452,7 @@ FABVDB_API void fabvdb_powder_options_init(fabvdb_powder_options* options);
  * fills the cavity of `part` (a hollow shell, drilled or not) with powder,
  * drills the holes, and runs voxel sand-pile rules through the operator's
  * routine: the first orientation, then turns-1 orientations drawn with the
- * seed. The report has initial_mm3, residual_mm3, residual_fraction,
+ * seed (or the routine of options->routine_json). The report has initial_mm3, residual_mm3, residual_fraction,
  * residual_after_turn_mm3[], routine[] (the gravity of each turn), voxel_size
  * and timings.
  * part: borrowed. holes_json: JSON text, a drain report or any object with a

@@ -14,16 +14,17 @@ static const cli_option options[] = {
     {"--output", 'o', CLI_STRING, "OUT", NULL, "the drilled part (.stl .obj .ply .off .3mf)"},
     {"--wall", 0, CLI_LENGTH, "LEN", "3mm", "wall thickness when a solid input is hollowed"},
     {"--holes", 0, CLI_STRING, "auto|K", "auto",
-     "number of holes; auto: at least 2 per cavity, more until the predicted residual is under --target"},
+     "number of holes; auto: at least 2 per cavity, the fewest whose prediction under the cleaning routine is under --target"},
     {"--hole-diameter", 0, CLI_LENGTH, "LEN", "4mm", "drain hole diameter"},
     {"--repose", 0, CLI_ANGLE, "ANGLE", "35deg", "the powder's angle of repose"},
     {"--orientations", 0, CLI_STRING, "all|FILE", "all",
      "gravity directions the operator turns the part to: all = 162 icosphere directions, or a file of \"x y z\" lines"},
     {"--effort", 0, CLI_NUMBER, "RHO", "0.9", "chance the operator turns the part once more (about 1/(1-RHO) turns)"},
     {"--target", 0, CLI_STRING, "PCT", "1%",
-     "automatic mode: stop adding holes once the predicted residual is under this share of the cavity (1% or 0.01)"},
+     "automatic mode: the powder left under the cleaning routine that is good enough, a share of the cavity (1% or 0.01)"},
     {"--keep-out", 0, CLI_STRING, "FILE", NULL, "no hole here: a JSON file of spheres or a closed mesh"},
-    {"--heatmap", 0, CLI_STRING, "HEAT.ply", NULL, "write the cavity surface coloured by drainability"},
+    {"--heatmap", 0, CLI_STRING, "HEAT.ply", NULL,
+     "heat maps of the cavity: share of the powder that drains, and HEAT_left.ply, the powder left (+ PNG legends)"},
     {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size of the level sets (default: wall / 4)"},
     {"--patches", 0, CLI_INT, "N", "2000", "cavity surface patches of the drainability model"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb drain')"},
@@ -41,6 +42,44 @@ static int parse_share(const char* text, double* share) {
     if (*end != '\0' || !(value >= 0.0 && value < 1.0)) return 0;
     *share = value;
     return 1;
+}
+
+/* Prints the report's cleaning routine, one line a turn. */
+static void print_routine(cli_run* run, const fabvdb_report* report) {
+    double routine = 0, mean = 0, spread = 0;
+    if (fabvdb_report_number(run->ctx, report, "/routine_residual_fraction", &routine) != FABVDB_OK) return;
+    fabvdb_report_number(run->ctx, report, "/random_routines/mean_fraction", &mean);
+    fabvdb_report_number(run->ctx, report, "/random_routines/std_fraction", &spread);
+    printf("cleaning routine (predicted powder left: %.2f%%; random turns instead: %.2f%% +- %.2f%%):\n",
+           100.0 * routine, 100.0 * mean, 100.0 * spread);
+    for (int step = 0;; ++step) {
+        char pointer[64];
+        double tilt, down, lowest, axis[3];
+        snprintf(pointer, sizeof pointer, "/routine/%d/tilt_degrees", step);
+        if (fabvdb_report_number(run->ctx, report, pointer, &tilt) != FABVDB_OK) break;
+        for (int k = 0; k < 3; ++k) {
+            snprintf(pointer, sizeof pointer, "/routine/%d/tilt_axis/%d", step, k);
+            fabvdb_report_number(run->ctx, report, pointer, &axis[k]);
+        }
+        char where[64] = "";
+        snprintf(pointer, sizeof pointer, "/routine/%d/hole_down", step);
+        if (fabvdb_report_number(run->ctx, report, pointer, &down) == FABVDB_OK) {
+            snprintf(where, sizeof where, "hole %.0f points down", down + 1);
+        } else {
+            snprintf(pointer, sizeof pointer, "/routine/%d/lowest_hole", step);
+            if (fabvdb_report_number(run->ctx, report, pointer, &lowest) == FABVDB_OK)
+                snprintf(where, sizeof where, "no hole points down; hole %.0f is lowest", lowest + 1);
+        }
+        if (step == 0)
+            printf("  %2d. as printed: %s\n", step + 1, where);
+        else if (tilt < 0.5)
+            printf("  %2d. keep it as it is, tap it: %s\n", step + 1, where);
+        else if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0)
+            printf("  %2d. turn it upside down: %s\n", step + 1, where);
+        else
+            printf("  %2d. tilt %3.0f deg about (%5.2f, %5.2f, %5.2f): %s\n", step + 1, tilt, axis[0], axis[1], axis[2],
+                   where);
+    }
 }
 
 static int run_drain(cli_run* run) {
@@ -99,7 +138,8 @@ static int run_drain(cli_run* run) {
     fabvdb_mesh_free(drilled);
     if (status == FABVDB_OK) {
         cli_note(run, "wrote %s", output->text);
-        if (drain.heatmap_path) cli_note(run, "wrote %s", drain.heatmap_path);
+        if (drain.heatmap_path)
+            cli_note(run, "wrote %s, the powder-left map and their legends beside it", drain.heatmap_path);
     }
     if (status != FABVDB_OK) {
         fabvdb_report_free(report);
@@ -121,6 +161,7 @@ static int run_drain(cli_run* run) {
     }
     printf("%.0f drain holes; predicted powder left inside: %.2f%% (lowest-point holes: %.2f%%)\n", holes_count,
            100.0 * predicted, 100.0 * baseline);
+    print_routine(run, report);
     fabvdb_report_free(report);
     return CLI_EXIT_OK;
 }
@@ -134,6 +175,8 @@ const cli_command cmd_drain = {
     "powder moves in the cavity as the operator turns the part (floors flatter than the angle of repose\n"
     "hold it, steeper walls shed it, overhangs drop it; holes absorb it when their tunnel points down), and\n"
     "drills the holes that leave the least powder inside. Holes pass cleanly through the wall, keep a\n"
-    "diameter apart and stay out of --keep-out regions; every cavity gets its own. The report compares the\n"
-    "prediction with holes at the lowest points of the part as printed (-z down).",
+    "diameter apart and stay out of --keep-out regions; every cavity gets its own. The holes are never\n"
+    "predicted to leave more than as many holes at the lowest points of the part as printed (-z down).\n"
+    "Prints the cleaning routine for the holes: the turns, in words, that drain the most (replay it with\n"
+    "`fabvdb powder-sim --routine`), with the powder predicted to stay under it and under random turns.",
     options, sizeof(options) / sizeof(options[0]), 1, 1, run_drain};

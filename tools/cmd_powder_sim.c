@@ -16,13 +16,15 @@ static const cli_option options[] = {
     {"--seed", 0, CLI_INT, "S", "1", "seed of the draws of the later turns"},
     {"--repose", 0, CLI_ANGLE, "ANGLE", "35deg", "the powder's angle of repose"},
     {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "sand-pile cell size (default: diagonal / 150, at most a quarter hole)"},
+    {"--routine", 0, CLI_STRING, "R.json", NULL,
+     "replay exactly this routine: a drain report's routine[] (or an array of gravities)"},
     {"--report", 0, CLI_STRING, "S.json", NULL, "also write every figure as JSON (keys: README 'fabvdb powder-sim')"},
 };
 
-static char* read_text(const cli_run* run, const char* path) {
+static char* read_text(const cli_run* run, const char* path, const char* what) {
     FILE* file = fopen(path, "rb");
     if (!file) {
-        fprintf(stderr, "fabvdb %s: io error: %s: cannot open the holes file\n", run->command->name, path);
+        fprintf(stderr, "fabvdb %s: io error: %s: cannot open the %s file\n", run->command->name, path, what);
         return NULL;
     }
     size_t size = 0, capacity = 4096;
@@ -59,13 +61,26 @@ static int run_powder_sim(cli_run* run) {
     if (!(powder.repose_degrees > 0.0 && powder.repose_degrees < 90.0))
         return cli_usage_error(run, "--repose must be between 0 and 90 degrees");
 
-    char* holes = read_text(run, holes_path->text);
+    const cli_value* routine_path = cli_get(run, "--routine");
+    if (routine_path->set && (cli_get(run, "--turns")->given || cli_get(run, "--seed")->given))
+        return cli_usage_error(run, "--routine replays its own turns: --turns and --seed do not apply");
+    char* holes = read_text(run, holes_path->text, "holes");
     if (!holes) return CLI_EXIT_BAD_INPUT;
+    char* routine = NULL;
+    if (routine_path->set) {
+        routine = read_text(run, routine_path->text, "routine");
+        if (!routine) {
+            free(holes);
+            return CLI_EXIT_BAD_INPUT;
+        }
+        powder.routine_json = routine;
+    }
     double* orientations = NULL;
     int code = cli_read_orientations(run, cli_get(run, "--orientations")->text, &orientations,
                                      &powder.orientation_count);
     if (code != CLI_EXIT_OK) {
         free(holes);
+        free(routine);
         return code;
     }
     powder.orientations = orientations;
@@ -80,6 +95,7 @@ static int run_powder_sim(cli_run* run) {
     if (code == CLI_EXIT_OK) status = fabvdb_powder_simulate(run->ctx, mesh, holes, &powder, &report);
     fabvdb_mesh_free(mesh);
     free(holes);
+    free(routine);
     free(orientations);
     if (code != CLI_EXIT_OK) return code;
     if (status != FABVDB_OK) return cli_fail(run, status);
@@ -92,7 +108,9 @@ static int run_powder_sim(cli_run* run) {
     fabvdb_report_number(run->ctx, report, "/initial_mm3", &initial);
     fabvdb_report_number(run->ctx, report, "/residual_mm3", &residual);
     fabvdb_report_number(run->ctx, report, "/residual_fraction", &fraction);
-    printf("powder left inside after %d turns: %.1f mm^3 of %.1f mm^3 (%.2f%%)\n", powder.turns, residual, initial,
+    double turns = powder.turns;
+    fabvdb_report_number(run->ctx, report, "/turns", &turns);
+    printf("powder left inside after %.0f turns: %.1f mm^3 of %.1f mm^3 (%.2f%%)\n", turns, residual, initial,
            100.0 * fraction);
     fabvdb_report_free(report);
     return CLI_EXIT_OK;
@@ -101,9 +119,10 @@ static int run_powder_sim(cli_run* run) {
 const cli_command cmd_powder_sim = {
     "powder-sim",
     "simulate how much powder stays trapped in a drilled hollow part (reference check)",
-    "IN --holes R.json [--orientations all|FILE] [--turns N] [--seed S] [--report S.json]",
+    "IN --holes R.json [--orientations all|FILE] [--turns N] [--seed S | --routine R.json] [--report S.json]",
     "Independent of the drainability model behind `fabvdb drain`: fills the cavity of IN with voxels of\n"
     "powder, opens the holes listed in R.json, and runs sand-pile rules with the angle of repose through\n"
     "a routine like an operator's: first as printed (-z down), then turns drawn with --seed from the\n"
-    "orientation set. Prints and reports the powder left inside.",
+    "orientation set, or exactly the routine of --routine (the cleaning routine a drain report recommends).\n"
+    "Prints and reports the powder left inside.",
     options, sizeof(options) / sizeof(options[0]), 1, 1, run_powder_sim};

@@ -1,10 +1,13 @@
 //! C API: drainability — drain-hole planning and drilling (`fabvdb drain`)
 //! and the reference powder simulation (`fabvdb powder-sim`).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "api/guard.h"
+#include "core/colour_bar.h"
 #include "core/mesh.h"
+#include "powder/cleaning_routine.h"
 #include "powder/drain_part.h"
 #include "powder/heatmap_ply.h"
 #include "powder/keep_out.h"
@@ -94,6 +97,92 @@ void check_struct_size(size_t given, size_t needed, const char* name) {
         throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, std::string(name) + ".struct_size is too small (call its _init())");
 }
 
+//! The gravities of a routine to replay: a drain report's routine[] of
+//! {gravity}, or an array of [x, y, z].
+std::vector<fabvdb::Vec3> parse_routine(const char* text) {
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+        throw fabvdb::Error(FABVDB_ERR_BAD_INPUT, std::string("the routine is not JSON: ") + e.what());
+    }
+    const nlohmann::json& steps = document.is_object() && document.contains("routine") ? document["routine"] : document;
+    if (!steps.is_array() || steps.empty())
+        throw fabvdb::Error(FABVDB_ERR_BAD_INPUT, "the routine must be a non-empty array (or a drain report's routine[])");
+    std::vector<double> values;
+    for (size_t i = 0; i < steps.size(); ++i) {
+        const nlohmann::json& g = steps[i].is_object() && steps[i].contains("gravity") ? steps[i]["gravity"] : steps[i];
+        if (!g.is_array() || g.size() != 3 || !g[0].is_number() || !g[1].is_number() || !g[2].is_number())
+            throw fabvdb::Error(FABVDB_ERR_BAD_INPUT,
+                                "routine[" + std::to_string(i) + "] must be [x, y, z] or have a gravity [x, y, z]");
+        for (int k = 0; k < 3; ++k) values.push_back(g[k].get<double>());
+    }
+    return orientation_list(values.data(), steps.size());
+}
+
+//! The cleaning routine as the report gives it: each turn's gravity, the
+//! hole that points down, the tilt from the previous turn and the words.
+nlohmann::json routine_json(const fabvdb::powder::DrainPlan& plan) {
+    nlohmann::json steps = nlohmann::json::array();
+    for (const auto& step : fabvdb::powder::cleaning_steps(plan.holes, plan.first_gravity, plan.routine))
+        steps.push_back({{"gravity", vec_json(step.gravity)},
+                         {"hole_down", step.hole_down >= 0 ? nlohmann::json(step.hole_down) : nlohmann::json()},
+                         {"lowest_hole", step.lowest_hole >= 0 ? nlohmann::json(step.lowest_hole) : nlohmann::json()},
+                         {"tilt_degrees", step.tilt_degrees},
+                         {"tilt_axis", vec_json(step.tilt_axis)},
+                         {"instruction", step.instruction}});
+    return steps;
+}
+
+//! Mean, standard deviation, least and most of the random routines' residual fractions.
+nlohmann::json spread_json(const std::vector<double>& residuals, double total) {
+    if (residuals.empty() || !(total > 0.0)) return nullptr;
+    double sum = 0.0, squares = 0.0;
+    for (double r : residuals) sum += r / total;
+    const double mean = sum / double(residuals.size());
+    for (double r : residuals) squares += (r / total - mean) * (r / total - mean);
+    const auto [least, most] = std::minmax_element(residuals.begin(), residuals.end());
+    return {{"routines", residuals.size()},
+            {"mean_fraction", mean},
+            {"std_fraction", std::sqrt(squares / double(residuals.size()))},
+            {"min_fraction", *least / total},
+            {"max_fraction", *most / total}};
+}
+
+//! The drain's two heat maps and their legends (see fabvdb_drain_options'
+//! heatmap_path), under the cleaning routine: the share that drains at
+//! `path`, the powder left at STEM_left.ply, each with STEM.png. Returns
+//! what the report says of them.
+nlohmann::json write_heat_maps(const fabvdb::powder::DrainPlan& plan, const std::string& path) {
+    const std::string stem =
+        path.size() > 4 && path.compare(path.size() - 4, 4, ".ply") == 0 ? path.substr(0, path.size() - 4) : path;
+    const auto& patches = plan.patches;
+    const auto& evaluation = plan.routine_evaluation;
+    std::vector<double> depth(patches.size(), 0.0);
+    for (size_t j = 0; j < patches.size(); ++j)
+        depth[j] = patches.area[j] > 0.0 ? evaluation.left_per_patch[j] / patches.area[j] : 0.0;
+    const std::vector<double> share = fabvdb::powder::vertex_values(plan.cavity_surface, patches, evaluation.drained_share);
+    const std::vector<double> left = fabvdb::powder::vertex_values(plan.cavity_surface, patches, depth);
+    double deepest = 0.0;
+    for (double v : left) deepest = std::max(deepest, v);
+    const double top = deepest > 0.0 ? deepest : 1.0;
+    fabvdb::powder::write_heatmap_ply(plan.cavity_surface, share, 0.0, 1.0,
+                                      "share of the powder resting here at the start that drains", path);
+    fabvdb::write_colour_bar_png(stem + ".png", "powder that drains", 0.0, 1.0, "");
+    fabvdb::powder::write_heatmap_ply(plan.cavity_surface, left, 0.0, top,
+                                      "powder left at the end, mm3 per mm2 of surface", stem + "_left.ply");
+    fabvdb::write_colour_bar_png(stem + "_left.png", "powder left", 0.0, top, "mm");
+    double weighted = 0.0, initial = 0.0;
+    for (size_t j = 0; j < patches.size(); ++j) {
+        weighted += evaluation.initial_per_patch[j] * evaluation.drained_share[j];
+        initial += evaluation.initial_per_patch[j];
+    }
+    return {{"drained_share", {{"path", path}, {"legend", stem + ".png"}, {"min", 0.0}, {"max", 1.0},
+                               {"mean_by_powder", initial > 0.0 ? weighted / initial : 1.0}}},
+            {"powder_left", {{"path", stem + "_left.ply"}, {"legend", stem + "_left.png"}, {"min", 0.0},
+                             {"max", top}, {"unit", "mm3/mm2"}}}};
+}
+
 }  // namespace
 
 extern "C" {
@@ -159,17 +248,23 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
                 o.keep_out_path, o.voxel_size > 0 ? o.voxel_size : o.wall / 4.0, progress);
         fabvdb::powder::DrainPartResult result = fabvdb::powder::drain_part(mesh->mesh, part_options, progress);
         const auto& plan = result.plan;
+        nlohmann::json heatmap;
         if (o.heatmap_path) {
             const auto start = std::chrono::steady_clock::now();
-            fabvdb::powder::write_heatmap_ply(plan.cavity_surface, plan.patches, plan.evaluation.drainability,
-                                              o.heatmap_path);
+            heatmap = write_heat_maps(plan, o.heatmap_path);
             result.timings["heat map"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
         nlohmann::json report;
         report["holes"] = holes_json(plan.holes);
         report["predicted_residual_fraction"] = plan.evaluation.residual_fraction();
         report["predicted_residual_mm3"] = plan.evaluation.residual_volume;
+        report["routine"] = routine_json(plan);
+        report["routine_residual_fraction"] = plan.routine_evaluation.residual_fraction();
+        report["routine_residual_mm3"] = plan.routine_evaluation.residual_volume;
+        report["random_routines"] = spread_json(plan.random_residuals, plan.evaluation.total_volume);
         report["baseline_holes"] = holes_json(plan.baseline);
+        report["baseline_routine_residual_fraction"] =
+            plan.evaluation.total_volume > 0 ? plan.baseline_routine_residual / plan.evaluation.total_volume : 0.0;
         report["baseline_residual_fraction"] = plan.baseline_evaluation.residual_fraction();
         report["baseline_residual_mm3"] = plan.baseline_evaluation.residual_volume;
         report["cavity_volume_mm3"] = plan.evaluation.total_volume;
@@ -182,6 +277,7 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         report["repose_degrees"] = o.repose_degrees;
         report["effort"] = o.effort;
         report["orientations"] = o.orientations ? o.orientation_count : size_t(162);
+        if (o.heatmap_path) report["heatmap"] = heatmap;
         report["timings"] = result.timings;
         double total = 0.0;
         for (const auto& [name, seconds] : result.timings) total += seconds;
@@ -233,8 +329,9 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
         sandpile.cell_size = voxel;
         sandpile.repose_radians = o.repose_degrees * kDegree;
         sandpile.slope_window = o.slope_window;
-        sandpile.routine = fabvdb::powder::operator_routine(orientation_list(o.first_gravity, 1).front(), set,
-                                                            o.turns, o.seed);
+        sandpile.routine = o.routine_json ? parse_routine(o.routine_json)
+                                          : fabvdb::powder::operator_routine(orientation_list(o.first_gravity, 1).front(),
+                                                                             set, o.turns, o.seed);
         const fabvdb::powder::SandpileResult result =
             fabvdb::powder::simulate_sandpile(*solid, holes, sandpile, progress);
         const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -247,8 +344,9 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
         nlohmann::json routine = nlohmann::json::array();
         for (const auto& g : sandpile.routine) routine.push_back(vec_json(g));
         report["routine"] = routine;
-        report["turns"] = o.turns;
-        report["seed"] = o.seed;
+        report["turns"] = sandpile.routine.size();
+        if (o.routine_json) report["seed"] = nullptr;
+        else report["seed"] = o.seed;
         report["voxel_size"] = voxel;
         report["holes"] = holes.size();
         report["timings"] = {{"signed distance", distance_seconds}, {"simulation", total - distance_seconds},

@@ -6,7 +6,7 @@
 
 namespace fabvdb::powder {
 
-std::vector<DrainHole> baseline_holes(const std::vector<DrainHole>& candidates, const std::vector<int>& per_cavity,
+std::vector<size_t> baseline_holes(const std::vector<DrainHole>& candidates, const std::vector<int>& per_cavity,
                                       const Vec3& gravity, double min_center_distance) {
     auto height = [&](const DrainHole& hole) {
         return -(hole.center[0] * gravity[0] + hole.center[1] * gravity[1] + hole.center[2] * gravity[2]);
@@ -16,6 +16,7 @@ std::vector<DrainHole> baseline_holes(const std::vector<DrainHole>& candidates, 
     std::sort(order.begin(), order.end(),
               [&](size_t a, size_t b) { return height(candidates[a]) < height(candidates[b]); });
     std::vector<DrainHole> holes;
+    std::vector<size_t> chosen;
     std::vector<int> taken(per_cavity.size(), 0);
     for (size_t index : order) {
         const DrainHole& candidate = candidates[index];
@@ -23,9 +24,10 @@ std::vector<DrainHole> baseline_holes(const std::vector<DrainHole>& candidates, 
             continue;
         if (!spaced_from(candidate, holes, min_center_distance)) continue;
         holes.push_back(candidate);
+        chosen.push_back(index);
         ++taken[candidate.cavity];
     }
-    return holes;
+    return chosen;
 }
 
 }  // namespace fabvdb::powder

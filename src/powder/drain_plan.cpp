@@ -6,7 +6,6 @@
 
 #include "core/error.h"
 #include "core/icosphere.h"
-#include "powder/baseline_holes.h"
 #include "powder/hole_candidates.h"
 #include "powder/orientation_flows.h"
 #include "powder/powder_drop.h"
@@ -90,16 +89,18 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     clock.lap("drainability model");
     HoleSearchOptions search = options.search;
     search.min_center_distance = 2.0 * options.hole_diameter;
-    HoleSearchResult found = search_drain_holes(model, candidates, plan.patches.cavity_count, search, progress);
+    HoleSearchResult found =
+        search_drain_holes(model, candidates, plan.patches.cavity_count, first.gravity, search, progress);
     plan.holes = std::move(found.holes);
     plan.evaluation = std::move(found.evaluation);
+    for (uint32_t k : found.routine) plan.routine.push_back(model.turn_gravity(k));
+    plan.routine_evaluation = std::move(found.routine_evaluation);
+    plan.random_residuals = std::move(found.random_residuals);
+    plan.baseline = std::move(found.baseline);
+    plan.baseline_evaluation = std::move(found.baseline_evaluation);
+    plan.baseline_routine_residual = found.baseline_routine_residual;
+    plan.first_gravity = first.gravity;
     clock.lap("hole search");
-
-    std::vector<int> per_cavity(plan.patches.cavity_count, 0);
-    for (const DrainHole& hole : plan.holes) ++per_cavity[hole.cavity];
-    plan.baseline = baseline_holes(candidates, per_cavity, first.gravity, search.min_center_distance);
-    plan.baseline_evaluation = model.evaluate(plan.baseline);
-    clock.lap("baseline");
     if (options.inspect) options.inspect(model, candidates);
     return plan;
 }

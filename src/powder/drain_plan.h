@@ -2,8 +2,9 @@
 //! cavity surface, clusters it into patches, builds the powder flow of every
 //! orientation (the first, printing orientation and the operator's set),
 //! drops the cavity's powder, finds the candidate sites, searches the holes
-//! and places the lowest-point baseline with as many holes per cavity.
-//! Returns the holes, the model's evaluation of both sets, per-stage timings.
+//! with their cleaning routine and places the lowest-point baseline with as
+//! many holes per cavity. Returns the holes, the routine, the model's
+//! evaluation of both sets, per-stage timings.
 //! Reports progress; cancellable (Error(CANCELLED), no partial result).
 #pragma once
 
@@ -47,9 +48,16 @@ struct DrainPlan {
     CavityPatches patches;
     size_t candidate_count = 0;
     std::vector<DrainHole> holes;
-    DrainEvaluation evaluation;
+    DrainEvaluation evaluation;  //!< the prediction under random routines (their mean)
+    //! The cleaning routine: the gravity of each later turn (the first,
+    //! as printed, is `first_gravity`), and the prediction under it.
+    std::vector<Vec3> routine;
+    DrainEvaluation routine_evaluation;
+    std::vector<double> random_residuals;  //!< mm³, one per random routine of the prediction
     std::vector<DrainHole> baseline;
     DrainEvaluation baseline_evaluation;
+    double baseline_routine_residual = 0.0;  //!< mm³, under the lowest-point holes' own routine
+    Vec3 first_gravity{0, 0, -1};
     std::map<std::string, double> timings;
 };
 

@@ -9,7 +9,6 @@
 #include <random>
 #include <utility>
 
-#include <Eigen/SparseCore>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -20,8 +19,6 @@ namespace fabvdb::powder {
 namespace {
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 //! Later-turn samples aimed at by the automatic stride, and the pile shares
 //! the expected residual is solved on.
@@ -34,65 +31,6 @@ constexpr int kPileLevels = 48;
 //! routines 0.97 / 0.96 / 0.81.
 constexpr size_t kRoutines = 64;
 constexpr uint64_t kRoutineSeed = 2026;
-//! Chain moves lighter than this share of a patch's powder are dropped (kept in place).
-constexpr double kChainPrune = 2e-3;
-
-//! y = matrix · x, rows in parallel.
-Eigen::VectorXd multiply(const SparseMatrix& matrix, const Eigen::VectorXd& x) {
-    Eigen::VectorXd y(matrix.rows());
-    const int* outer = matrix.outerIndexPtr();
-    const int* inner = matrix.innerIndexPtr();
-    const double* value = matrix.valuePtr();
-    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, matrix.rows(), 256),
-                      [&](const tbb::blocked_range<Eigen::Index>& rows) {
-                          for (Eigen::Index i = rows.begin(); i < rows.end(); ++i) {
-                              double sum = 0.0;
-                              for (int e = outer[i]; e < outer[i + 1]; ++e) sum += value[e] * x[inner[e]];
-                              y[i] = sum;
-                          }
-                      });
-    return y;
-}
-
-//! Solves (base + effort · captured) x = rhs by BiCGSTAB with a Jacobi
-//! preconditioner, applying the two parts one after the other so the system
-//! is never assembled (the base is the large, fixed part). For the transposed
-//! system pass the transposes.
-Eigen::VectorXd solve(const SparseMatrix& base, const SparseMatrix& captured, double effort,
-                      const Eigen::VectorXd& rhs) {
-    auto apply = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd {
-        return multiply(base, x) + effort * (captured * x);
-    };
-    const Eigen::VectorXd inverse_diagonal = (base.diagonal() + effort * captured.diagonal()).cwiseInverse();
-    const double tolerance = 1e-7 * rhs.norm();
-    Eigen::VectorXd x = inverse_diagonal.cwiseProduct(rhs);
-    Eigen::VectorXd r = rhs - apply(x);
-    const Eigen::VectorXd shadow = r;
-    Eigen::VectorXd p = Eigen::VectorXd::Zero(rhs.size()), v = p;
-    double rho = 1.0, alpha = 1.0, omega = 1.0;
-    for (int iteration = 0; iteration < 1000 && r.norm() > tolerance; ++iteration) {
-        const double rho_next = shadow.dot(r);
-        if (rho_next == 0.0) break;
-        const double beta = (rho_next / rho) * (alpha / omega);
-        rho = rho_next;
-        p = r + beta * (p - omega * v);
-        const Eigen::VectorXd y = inverse_diagonal.cwiseProduct(p);
-        v = apply(y);
-        alpha = rho / shadow.dot(v);
-        const Eigen::VectorXd s = r - alpha * v;
-        const Eigen::VectorXd z = inverse_diagonal.cwiseProduct(s);
-        const Eigen::VectorXd t = apply(z);
-        const double tt = t.dot(t);
-        omega = tt > 0.0 ? t.dot(s) / tt : 0.0;
-        x += alpha * y + omega * z;
-        r = s - omega * t;
-        if (omega == 0.0) break;
-    }
-    if (!(r.norm() <= 1e-5 * rhs.norm()))
-        throw Error(FABVDB_ERR_INTERNAL, "the drainability system did not converge");
-    return x;
-}
-
 //! The steps to the 26 cells around a sample, and each sample's sample
 //! there (kNoSample if none, or if no path of face steps leads there:
 //! a diagonal step never cuts through a wall's edge or corner).
@@ -129,38 +67,6 @@ std::vector<float> heights(const SampleGrid& grid, const PowderSamples& powder, 
     std::vector<float> height(grid.size());
     for (size_t a = 0; a < grid.size(); ++a) height[a] = float(-dot(powder.position[grid.sample[a]], gravity));
     return height;
-}
-
-}  // namespace
-
-struct DrainabilityModel::TurnChain {
-    SparseMatrix base;  //!< I − ρ Σ_g w_g S(g): the chain without holes
-};
-
-namespace {
-
-//! Σ_g w_g S(g) diag(capture_g), the part of the chain that leaves through
-//! the holes (the system is base + ρ · this); `leave` (if not null) receives
-//! its row sums r.
-SparseMatrix captured_part(const std::vector<OrientationFlow>& turns, size_t n,
-                           const std::vector<std::vector<float>>& capture, Eigen::VectorXd* leave) {
-    const double weight = 1.0 / double(turns.size());
-    if (leave) *leave = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    std::vector<Eigen::Triplet<double>> removed;
-    for (size_t k = 0; k < turns.size(); ++k) {
-        const StochasticMatrix& settle = turns[k].settle;
-        for (size_t i = 0; i < n; ++i)
-            for (uint32_t e = settle.row_start[i]; e < settle.row_start[i + 1]; ++e) {
-                const float fraction = capture[k][settle.column[e]];
-                if (fraction <= 0.0f) continue;
-                const double w = weight * settle.weight[e] * fraction;
-                if (leave) (*leave)[int(i)] += w;
-                removed.emplace_back(int(i), int(settle.column[e]), w);
-            }
-    }
-    SparseMatrix part(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    part.setFromTriplets(removed.begin(), removed.end());
-    return part;
 }
 
 }  // namespace
@@ -233,48 +139,11 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
     // first-turn grid holds every sample).
     first_rank_.resize(powder.position.size());
     for (size_t a = 0; a < first_grid_.size(); ++a) first_rank_[first_grid_.sample[a]] = first_chains_.rank[a];
+    later_local_.assign(powder.position.size(), kNoSample);
+    for (const std::vector<uint32_t>& samples : later_chains_[0].by_rank)
+        for (size_t i = 0; i < samples.size(); ++i) later_local_[samples[i]] = uint32_t(i);
     patch_sample_.resize(patches.size());
     tbb::parallel_for(size_t(0), patches.size(), [&](size_t j) { patch_sample_[j] = later_grid_.nearest(patches.site[j]); });
-
-    const size_t n = patches.size();
-    const double weight = 1.0 / double(turns.size());
-    // Row by row (in parallel): the moves averaged over the turns (summed
-    // in turn order), by column. Moves of less than kChainPrune of a
-    // patch's powder stay put instead: the chain keeps a fraction of its
-    // entries, and the solve speeds up as much.
-    std::vector<std::vector<Eigen::Triplet<double>>> rows(n);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& range) {
-        std::vector<double> moved(n, 0.0);
-        std::vector<char> seen(n, 0);
-        std::vector<uint32_t> columns;
-        for (size_t i = range.begin(); i < range.end(); ++i) {
-            for (const OrientationFlow& flow : turns)
-                for (uint32_t e = flow.settle.row_start[i]; e < flow.settle.row_start[i + 1]; ++e) {
-                    const uint32_t j = flow.settle.column[e];
-                    if (!seen[j]) columns.push_back(j);
-                    seen[j] = 1;
-                    moved[j] += weight * flow.settle.weight[e];
-                }
-            std::sort(columns.begin(), columns.end());
-            double stays = 1.0;
-            for (uint32_t j : columns) {
-                if (moved[j] >= kChainPrune && j != i) {
-                    rows[i].emplace_back(int(i), int(j), -options.effort * moved[j]);
-                    stays -= moved[j];
-                }
-                moved[j] = 0.0;
-                seen[j] = 0;
-            }
-            columns.clear();
-            rows[i].emplace_back(int(i), int(i), 1.0 - options.effort * std::max(0.0, stays));
-        }
-    });
-    std::vector<Eigen::Triplet<double>> entries;
-    for (const auto& row : rows) entries.insert(entries.end(), row.begin(), row.end());
-    auto chain = std::make_unique<TurnChain>();
-    chain->base.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    chain->base.setFromTriplets(entries.begin(), entries.end());
-    chain_ = std::move(chain);
 }
 
 DrainabilityModel::~DrainabilityModel() = default;
@@ -639,96 +508,245 @@ double DrainabilityModel::later_residual_share(uint32_t cavity, double start, co
 
 DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes) const { return evaluate(drain(holes)); }
 
-std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained) const {
+DrainabilityModel::Later DrainabilityModel::later_powder(const Drain& drained, uint32_t c) const {
+    Later later;
+    later.retained = double(drained.retained_first[c]) * powder_.sample_volume;
+    later.samples = &later_chains_[0].by_rank[c];
+    later.start.reserve(later.samples->size());
+    for (uint32_t a : *later.samples) {
+        later.start.push_back(bit(drained.first[c], first_rank_[a]) ? 0.0 : 1.0);
+        later.count += later.start.back();
+    }
+    later.open.resize(turns_.size());
+    for (size_t k = 0; k < turns_.size(); ++k) {
+        for (size_t h = 0; h < drained.reaches.size(); ++h)
+            if (drained.reaches[h]->cavity == c && !drained.reaches[h]->later[k].empty()) later.open[k].push_back(h);
+        const Vec3& gravity = turns_[k].gravity;
+        std::sort(later.open[k].begin(), later.open[k].end(), [&](size_t x, size_t y) {
+            return dot(drained.holes[x].center, gravity) > dot(drained.holes[y].center, gravity);
+        });
+    }
+    later.cavity = c;
+    return later;
+}
+
+void DrainabilityModel::later_turn(const Drain& drained, const Later& later, uint32_t k, std::vector<double>& fill) const {
+    const std::vector<size_t>& open = later.open[k];
+    const std::vector<uint32_t>& by_rank = later_chains_[k].by_rank[later.cavity];
+    auto powder_at = [&](size_t rank) -> double& { return fill[later_local_[by_rank[rank]]]; };
+    // Each hole takes the powder above its surface of repose (a sample two
+    // holes drain goes to the lower), then the powder it took fills its
+    // crater's rim, lowest first, before leaving.
+    std::vector<double> out(open.size(), 0.0);
+    for (size_t o = 0; o < open.size(); ++o) {
+        const std::vector<uint64_t>& bits = drained.reaches[open[o]]->later[k];
+        for (size_t w = 0; w < bits.size(); ++w)
+            for (uint64_t word = bits[w]; word != 0; word &= word - 1) {
+                double& powder = powder_at((w << 6) + size_t(__builtin_ctzll(word)));
+                out[o] += powder;
+                powder = 0.0;
+            }
+    }
+    const std::vector<uint64_t>& all = drained.later[k][later.cavity];
+    for (size_t o = 0; o < open.size(); ++o) {
+        const std::vector<uint64_t>& rim = drained.reaches[open[o]]->later_rim[k];
+        for (size_t w = 0; w < rim.size() && out[o] > 0.0; ++w)
+            for (uint64_t word = rim[w] & ~all[w]; word != 0 && out[o] > 0.0; word &= word - 1) {
+                double& powder = powder_at((w << 6) + size_t(__builtin_ctzll(word)));
+                const double added = std::min(out[o], 1.0 - powder);
+                powder += added;
+                out[o] -= added;
+            }
+    }
+}
+
+double DrainabilityModel::Later::left(const std::vector<double>& fill) const {
+    if (count == 0.0) return retained;
+    double sum = 0.0;
+    for (double v : fill) sum += v;
+    return retained * sum / count;
+}
+
+std::vector<double> DrainabilityModel::kept_in_place(const Drain& drained, const std::vector<Routine>& routines,
+                                                     std::vector<double>* left, std::vector<double>* per_routine) const {
     std::vector<double> residual(patches_.cavity_count, 0.0);
+    if (left) left->assign(powder_.position.size(), 0.0);
+    if (per_routine) per_routine->assign(routines.size(), 0.0);
     for (uint32_t c = 0; c < patches_.cavity_count; ++c) {
-        const double retained = double(drained.retained_first[c]) * powder_.sample_volume;
-        // The later-turn samples the first turn leaves.
-        const std::vector<uint32_t>& samples = later_chains_[0].by_rank[c];
-        std::vector<double> start(powder_.position.size(), 0.0);
-        double left = 0.0;
-        for (uint32_t a : samples) left += start[a] = bit(drained.first[c], first_rank_[a]) ? 0.0 : 1.0;
-        if (left == 0.0) {
-            residual[c] = retained;
+        const Later later = later_powder(drained, c);
+        if (later.count == 0.0) {
+            // Only the first-turn grid keeps some: it stays where it lies.
+            residual[c] = later.retained;
+            if (left)
+                for (uint32_t a : first_chains_.by_rank[c])
+                    if (!bit(drained.first[c], first_rank_[a])) (*left)[a] = powder_.sample_volume;
+            if (per_routine)
+                for (double& v : *per_routine) v += later.retained;
             continue;
         }
-        // Per turn: the cavity's holes that drain anything, lowest first.
-        std::vector<std::vector<size_t>> open(turns_.size());
-        for (size_t k = 0; k < turns_.size(); ++k) {
-            for (size_t h = 0; h < drained.reaches.size(); ++h)
-                if (drained.reaches[h]->cavity == c && !drained.reaches[h]->later[k].empty()) open[k].push_back(h);
-            const Vec3& gravity = turns_[k].gravity;
-            std::sort(open[k].begin(), open[k].end(), [&](size_t x, size_t y) {
-                return dot(drained.holes[x].center, gravity) > dot(drained.holes[y].center, gravity);
-            });
-        }
-        std::vector<double> kept(routines_.size(), 0.0);
-        tbb::parallel_for(size_t(0), routines_.size(), [&](size_t r) {
-            std::vector<double> fill = start, out;
-            for (uint32_t k : routines_[r]) {
-                const std::vector<uint32_t>& by_rank = later_chains_[k].by_rank[c];
-                // Each hole takes the powder above its surface of repose (a
-                // sample two holes drain goes to the lower), then the powder
-                // it took fills its crater's rim, lowest first, before leaving.
-                out.assign(open[k].size(), 0.0);
-                for (size_t o = 0; o < open[k].size(); ++o) {
-                    const std::vector<uint64_t>& bits = drained.reaches[open[k][o]]->later[k];
-                    for (size_t w = 0; w < bits.size(); ++w)
-                        for (uint64_t word = bits[w]; word != 0; word &= word - 1) {
-                            double& powder = fill[by_rank[(w << 6) + size_t(__builtin_ctzll(word))]];
-                            out[o] += powder;
-                            powder = 0.0;
-                        }
-                }
-                const std::vector<uint64_t>& all = drained.later[k][c];
-                for (size_t o = 0; o < open[k].size(); ++o) {
-                    const std::vector<uint64_t>& rim = drained.reaches[open[k][o]]->later_rim[k];
-                    for (size_t w = 0; w < rim.size() && out[o] > 0.0; ++w)
-                        for (uint64_t word = rim[w] & ~all[w]; word != 0 && out[o] > 0.0; word &= word - 1) {
-                            double& powder = fill[by_rank[(w << 6) + size_t(__builtin_ctzll(word))]];
-                            const double added = std::min(out[o], 1.0 - powder);
-                            powder += added;
-                            out[o] -= added;
-                        }
-                }
-            }
-            for (uint32_t a : samples) kept[r] += fill[a];
+        // Per routine: the powder left on each later-turn sample at the end.
+        std::vector<std::vector<double>> ends(routines.size());
+        tbb::parallel_for(size_t(0), routines.size(), [&](size_t r) {
+            ends[r] = later.start;
+            for (uint32_t k : routines[r]) later_turn(drained, later, k, ends[r]);
         });
-        double sum = 0.0;
-        for (double v : kept) sum += v;
-        residual[c] = retained * sum / (left * double(routines_.size()));
+        // Each later-turn sample left stands for retained / count of the
+        // powder the first turn leaves.
+        const double scale = later.retained / (later.count * double(routines.size()));
+        for (size_t i = 0; i < later.samples->size(); ++i) {
+            double sum = 0.0;
+            for (const std::vector<double>& end : ends) sum += end[i];
+            residual[c] += scale * sum;
+            if (left) (*left)[(*later.samples)[i]] = scale * sum;
+        }
+        if (per_routine)
+            for (size_t r = 0; r < routines.size(); ++r) (*per_routine)[r] += later.left(ends[r]);
     }
     return residual;
 }
 
 double DrainabilityModel::predicted_residual(const Drain& drained) const {
     double residual = 0.0;
-    for (double v : kept_in_place(drained)) residual += v;
+    for (double v : kept_in_place(drained, routines_, nullptr, nullptr)) residual += v;
     return residual;
 }
 
-DrainEvaluation DrainabilityModel::evaluate(const Drain& drained) const {
+double DrainabilityModel::routine_residual(const Drain& drained, const Routine& routine) const {
+    double residual = 0.0;
+    for (double v : kept_in_place(drained, {routine}, nullptr, nullptr)) residual += v;
+    return residual;
+}
+
+std::vector<double> DrainabilityModel::random_routine_residuals(const Drain& drained) const {
+    std::vector<double> per_routine;
+    kept_in_place(drained, routines_, nullptr, &per_routine);
+    return per_routine;
+}
+
+DrainabilityModel::Routine DrainabilityModel::best_routine(const Drain& drained, int length) const {
+    std::vector<Later> later;
+    for (uint32_t c = 0; c < patches_.cavity_count; ++c) later.push_back(later_powder(drained, c));
+    using Fill = std::vector<std::vector<double>>;  // per cavity
+    auto left_of = [&](const Fill& fill) {
+        double sum = 0.0;
+        for (size_t c = 0; c < later.size(); ++c) sum += later[c].left(fill[c]);
+        return sum;
+    };
+    auto turn = [&](Fill& fill, uint32_t k) {
+        for (size_t c = 0; c < later.size(); ++c) later_turn(drained, later[c], k, fill[c]);
+    };
+    Fill start;
+    for (const Later& cavity : later) start.push_back(cavity.start);
+    const double tie = 1e-6 * total_volume();
+    auto gravity_before = [&](const Routine& routine, size_t t) {
+        return t == 0 ? first_.gravity : turns_[routine[t - 1]].gravity;
+    };
+    // Of the turns whose `left` is within `tie` of the least, the one with
+    // the smallest tilt from `previous`.
+    auto pick = [&](const std::vector<double>& left, const Vec3& previous) {
+        const double least = *std::min_element(left.begin(), left.end());
+        uint32_t best = 0;
+        double best_tilt = -2.0;
+        for (size_t k = 0; k < left.size(); ++k) {
+            const double cosine = dot(turns_[k].gravity, previous);  // larger: a smaller tilt
+            if (left[k] <= least + tie && cosine > best_tilt) {
+                best_tilt = cosine;
+                best = uint32_t(k);
+            }
+        }
+        return best;
+    };
+    // Greedy: each turn the one that leaves the least after it.
+    Routine routine;
+    Fill fill = start;
+    for (int t = 0; t < length; ++t) {
+        std::vector<double> left(turns_.size(), 0.0);
+        tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
+            Fill next = fill;
+            turn(next, uint32_t(k));
+            left[k] = left_of(next);
+        });
+        routine.push_back(pick(left, gravity_before(routine, routine.size())));
+        turn(fill, routine.back());
+    }
+    auto residual_of = [&](const Routine& candidate) {
+        Fill end = start;
+        for (uint32_t k : candidate) turn(end, k);
+        return left_of(end);
+    };
+    // The greedy routine can be short-sighted: start from the best of it and
+    // the prediction's random routines (so it never leaves more than their
+    // mean), then change one turn at a time while that leaves less.
+    double best = residual_of(routine);
+    for (const Routine& random : routines_) {
+        if (int(random.size()) != length) continue;
+        const double residual = residual_of(random);
+        if (residual < best - tie) {
+            best = residual;
+            routine = random;
+        }
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+        bool improved = false;
+        Fill before = start;  // the powder before turn t
+        for (size_t t = 0; t < routine.size(); ++t) {
+            std::vector<double> left(turns_.size(), 0.0);
+            tbb::parallel_for(size_t(0), turns_.size(), [&](size_t k) {
+                Fill end = before;
+                turn(end, uint32_t(k));
+                for (size_t u = t + 1; u < routine.size(); ++u) turn(end, routine[u]);
+                left[k] = left_of(end);
+            });
+            const uint32_t k = pick(left, gravity_before(routine, t));
+            if (left[k] < best - tie) {
+                routine[t] = k;
+                best = left[k];
+                improved = true;
+            }
+            turn(before, routine[t]);
+        }
+        if (!improved) break;
+    }
+    return routine;
+}
+
+DrainEvaluation DrainabilityModel::evaluate(const Drain& drained) const { return evaluate(drained, routines_); }
+
+DrainEvaluation DrainabilityModel::evaluate(const Drain& drained, const std::vector<Routine>& routines) const {
     DrainEvaluation result;
     result.total_volume = powder_.total_volume();
     result.drained_first_volume = drained.drained_first_volume;
-    result.residual_per_cavity = kept_in_place(drained);
+    std::vector<double> left;
+    result.residual_per_cavity = kept_in_place(drained, routines, &left, nullptr);
     for (double v : result.residual_per_cavity) result.residual_volume += v;
 
-    // Per patch: each turn's moves end where the full pile drains for g.
+    // Per patch: the powder resting on it at the start and at the end.
     const size_t n = patches_.size();
-    std::vector<std::vector<float>> capture(turns_.size(), std::vector<float>(n, 0.0f));
-    for (size_t k = 0; k < turns_.size(); ++k)
-        for (size_t j = 0; j < n; ++j) {
-            const uint32_t a = patch_sample_[j];
-            if (a == kNoSample) continue;
-            const std::vector<uint64_t>& bits = drained.later[k][later_cavity_[a]];
-            if (!bits.empty() && bit(bits, later_chains_[k].rank[a])) capture[k][j] = 1.0f;
+    result.initial_per_patch.assign(n, 0.0);
+    result.left_per_patch.assign(n, 0.0);
+    for (size_t a = 0; a < powder_.position.size(); ++a) {
+        result.initial_per_patch[powder_.rest_patch[a]] += powder_.sample_volume;
+        result.left_per_patch[powder_.rest_patch[a]] += left[a];
+    }
+    std::vector<double> cavity_initial(patches_.cavity_count, 0.0), cavity_left(patches_.cavity_count, 0.0);
+    for (size_t j = 0; j < n; ++j) {
+        cavity_initial[patches_.cavity[j]] += result.initial_per_patch[j];
+        cavity_left[patches_.cavity[j]] += result.left_per_patch[j];
+    }
+    auto share = [](double initial, double left) { return initial > 0.0 ? 1.0 - left / initial : 1.0; };
+    result.drained_share.resize(n);
+    for (size_t j = 0; j < n; ++j) {
+        if (result.initial_per_patch[j] > 0.0) {
+            result.drained_share[j] = share(result.initial_per_patch[j], result.left_per_patch[j]);
+            continue;
         }
-    Eigen::VectorXd leave;
-    const SparseMatrix captured = captured_part(turns_, n, capture, &leave);
-    const Eigen::VectorXd d = solve(chain_->base, captured, options_.effort, options_.effort * leave);
-    result.drainability.resize(n);
-    for (size_t j = 0; j < n; ++j) result.drainability[j] = std::clamp(d[int(j)], 0.0, 1.0);
+        // No powder rests on it: the share of the patch its nearest sample rests on.
+        const uint32_t a = patch_sample_[j];
+        const uint32_t p = a == kNoSample ? uint32_t(j) : powder_.rest_patch[later_grid_.sample[a]];
+        result.drained_share[j] = result.initial_per_patch[p] > 0.0
+                                      ? share(result.initial_per_patch[p], result.left_per_patch[p])
+                                      : share(cavity_initial[patches_.cavity[j]], cavity_left[patches_.cavity[j]]);
+    }
     return result;
 }
 

@@ -51,10 +51,11 @@
 //!   samples that drain leave, so a turn maps the pile's share x to
 //!   F_g(x) ≤ x, and the expected residual share R_T(x), R_0(x) = x,
 //!   R_t(x) = mean_g R_{t−1}(F_g(x)), is computed on a grid of pile shares.
-//! - Drainability per patch (the heat map): the chance that powder resting on
-//!   patch i leaves with finite effort, d = ρ(r + Q d), one sparse solve
-//!   (BiCGSTAB) of the chain Σ_g w_g S(g) whose moves end where the full
-//!   pile drains for g.
+//! - The heat map comes from the prediction too: per patch, the share of
+//!   the powder resting on it at the start (each powder sample rests on a
+//!   patch) that has left at the end, and the powder left on it. Their
+//!   mean weighted by the powder at the start is the predicted drained
+//!   fraction.
 //! The as-printed turn uses every powder sample; later turns a grid coarser
 //! by a whole stride (a uniform subsample of about 2500). A class because the hole search
 //! evaluates many hole sets on the same flows.
@@ -93,7 +94,12 @@ struct DrainabilityOptions {
 };
 
 struct DrainEvaluation {
-    std::vector<double> drainability;  //!< per patch
+    //! Per patch: the share of the powder resting on it at the start that
+    //! has left at the end (negative where a crater's rim fills up; a patch
+    //! no powder rests on takes its nearest sample's patch's share), and
+    //! the powder resting on it at the start and left on it at the end (mm³).
+    std::vector<double> drained_share;
+    std::vector<double> initial_per_patch, left_per_patch;
     std::vector<double> residual_per_cavity;  //!< mm³
     double drained_first_volume = 0.0;
     double residual_volume = 0.0;
@@ -108,7 +114,7 @@ public:
                       const OrientationFlow& first, const PowderSamples& powder, const DrainabilityOptions& options);
     ~DrainabilityModel();
 
-    //! The residual and the drainability of every patch.
+    //! The residual and the heat map (the per-patch shares and powder).
     DrainEvaluation evaluate(const std::vector<DrainHole>& holes) const;
 
     //! What drains in the later turns: powder above the surface of repose
@@ -153,8 +159,29 @@ public:
     //! evaluate(holes) from what the holes drain by the surface of repose
     //! (drain(holes, Crater::surface), or the same from their reaches).
     DrainEvaluation evaluate(const Drain& drained) const;
-    //! evaluate(drained).residual_volume alone (mm³), without the per-patch solve.
+    //! The same for the given routines of later turns (turn indices into the
+    //! orientation set), each with equal weight.
+    using Routine = std::vector<uint32_t>;
+    DrainEvaluation evaluate(const Drain& drained, const std::vector<Routine>& routines) const;
+    //! evaluate(drained).residual_volume alone (mm³), without the heat map.
     double predicted_residual(const Drain& drained) const;
+    //! The prediction's residual (mm³) for one routine of later turns.
+    double routine_residual(const Drain& drained, const Routine& routine) const;
+    //! The prediction's residual (mm³) for each of its random routines.
+    std::vector<double> random_routine_residuals(const Drain& drained) const;
+    //! A cleaning routine of `length` later turns that leaves little powder
+    //! by the prediction: the turns chosen one after the other, each the
+    //! one that leaves the least after it, or the best of the prediction's
+    //! random routines if that leaves less (so never more than their mean),
+    //! then each turn in turn changed to the best one while that leaves
+    //! less (two passes). Among turns within a millionth of the cavity of
+    //! the least, the one with the smallest tilt from the previous gravity.
+    //! Costs about 162 × length² turns of the prediction.
+    Routine best_routine(const Drain& drained, int length) const;
+    //! The later turns of the prediction's routines (round(ρ / (1 − ρ))).
+    int later_turns() const { return later_turns_; }
+    //! Gravity of turn `k` of the orientation set.
+    const Vec3& turn_gravity(uint32_t k) const { return turns_[k].gravity; }
     double total_volume() const;
 
     //! Whether powder can leave through the hole's tunnel for `gravity`.
@@ -209,9 +236,31 @@ private:
     //! a pile share `start` after the first, with what `drain` (and `extra`,
     //! if not null) drains.
     double later_residual_share(uint32_t cavity, double start, const Drain& drain, const Reach* extra) const;
+    //! One cavity's powder as the first turn leaves it for the later turns:
+    //! its later-turn samples (powder samples, in the order later_local_
+    //! indexes), 1 on each the first turn left, how many, the volume they
+    //! stand for, and per turn the cavity's holes that drain anything,
+    //! lowest first.
+    struct Later {
+        uint32_t cavity = 0;
+        const std::vector<uint32_t>* samples = nullptr;
+        std::vector<double> start;
+        double count = 0.0, retained = 0.0;
+        std::vector<std::vector<size_t>> open;
+        //! The volume (mm³) `fill` stands for.
+        double left(const std::vector<double>& fill) const;
+    };
+    Later later_powder(const Drain& drained, uint32_t cavity) const;
+    //! One later turn `k` on `fill` (see the top: the powder keeps its place, save what drains).
+    void later_turn(const Drain& drained, const Later& later, uint32_t k, std::vector<double>& fill) const;
     //! The prediction's expected residual (mm³) per cavity after the later
-    //! turns: the powder kept where it lies, save what drains (see the top).
-    std::vector<double> kept_in_place(const Drain& drained) const;
+    //! turns of `routines` (the mean): the powder kept where it lies, save
+    //! what drains (see the top). `left` (if not null) receives the mean
+    //! powder left on each powder sample at the end (mm³; zero on samples
+    //! the later turns skip); `per_routine` (if not null) each routine's
+    //! residual summed over the cavities (mm³).
+    std::vector<double> kept_in_place(const Drain& drained, const std::vector<Routine>& routines,
+                                      std::vector<double>* left, std::vector<double>* per_routine) const;
 
     const CavityPatches& patches_;
     const std::vector<OrientationFlow>& turns_;
@@ -230,15 +279,13 @@ private:
     //! Per sample of each grid: its cavity. Per cavity: sample count of each grid.
     std::vector<uint32_t> first_cavity_, later_cavity_;
     std::vector<uint32_t> first_count_, later_count_;
-    //! Per powder sample: its rank among its cavity's first-turn samples.
-    std::vector<uint32_t> first_rank_;
+    //! Per powder sample: its rank among its cavity's first-turn samples,
+    //! and its place in its cavity's later-turn samples (kNoSample if none).
+    std::vector<uint32_t> first_rank_, later_local_;
     //! The prediction's routines: the turn indices of each.
-    std::vector<std::vector<uint32_t>> routines_;
+    std::vector<Routine> routines_;
     //! Per patch: the later-turn sample nearest its site (kNoSample if none).
     std::vector<uint32_t> patch_sample_;
-    //! I − ρ Σ_g w_g S(g), the turn chain without holes (Eigen, defined in the .cpp).
-    struct TurnChain;
-    std::unique_ptr<const TurnChain> chain_;
 };
 
 }  // namespace fabvdb::powder

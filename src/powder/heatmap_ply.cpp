@@ -1,4 +1,4 @@
-//! The drainability heat map as a coloured PLY (see heatmap_ply.h).
+//! A heat map as a coloured PLY (see heatmap_ply.h).
 #include "powder/heatmap_ply.h"
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/atomic_output.h"
+#include "core/colour_map.h"
 #include "core/error.h"
 
 namespace fabvdb::powder {
@@ -21,30 +22,32 @@ void put(std::string& out, T value) {
     out.append(bytes, sizeof(T));  // the project targets little-endian hosts
 }
 
-//! Red (0) through yellow (0.5) to green (1).
-void colour(double value, uint8_t rgb[3]) {
-    const double v = std::clamp(value, 0.0, 1.0);
-    rgb[0] = uint8_t(std::lround(255.0 * std::min(1.0, 2.0 * (1.0 - v))));
-    rgb[1] = uint8_t(std::lround(255.0 * std::min(1.0, 2.0 * v)));
-    rgb[2] = 0;
-}
-
 }  // namespace
 
-void write_heatmap_ply(const Mesh& surface, const CavityPatches& patches, const std::vector<double>& drainability,
-                       const std::string& path) {
-    if (drainability.size() != patches.size() || patches.patch_of_triangle.size() != surface.triangles.size())
-        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the heat map's drainability does not match its patches");
+std::vector<double> vertex_values(const Mesh& surface, const CavityPatches& patches,
+                                  const std::vector<double>& per_patch) {
+    if (per_patch.size() != patches.size() || patches.patch_of_triangle.size() != surface.triangles.size())
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the heat map's values do not match its patches");
     std::vector<double> sum(surface.vertices.size(), 0.0), weight(surface.vertices.size(), 0.0);
     for (size_t t = 0; t < surface.triangles.size(); ++t) {
         const double area = triangle_area(surface, surface.triangles[t]) + 1e-12;
-        const double value = drainability[patches.patch_of_triangle[t]];
+        const double value = per_patch[patches.patch_of_triangle[t]];
         for (uint32_t corner : surface.triangles[t]) {
             sum[corner] += area * value;
             weight[corner] += area;
         }
     }
-    std::string out = "ply\nformat binary_little_endian 1.0\ncomment fabvdb drainability heat map\n";
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] = weight[i] > 0 ? sum[i] / weight[i] : 0.0;
+    return sum;
+}
+
+void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_value, double low, double high,
+                       const std::string& description, const std::string& path) {
+    if (vertex_value.size() != surface.vertices.size())
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the heat map's values do not match its vertices");
+    const double span = high > low ? high - low : 1.0;
+    std::string out = "ply\nformat binary_little_endian 1.0\ncomment fabvdb heat map: " + description + "\n";
+    out += "comment colours: viridis from " + std::to_string(low) + " to " + std::to_string(high) + "\n";
     out += "element vertex " + std::to_string(surface.vertices.size()) + "\n";
     out += "property float x\nproperty float y\nproperty float z\n";
     out += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float quality\n";
@@ -52,11 +55,8 @@ void write_heatmap_ply(const Mesh& surface, const CavityPatches& patches, const 
     out += "property list uchar int vertex_indices\nend_header\n";
     for (size_t i = 0; i < surface.vertices.size(); ++i) {
         for (int k = 0; k < 3; ++k) put(out, float(surface.vertices[i][k]));
-        const double value = weight[i] > 0 ? sum[i] / weight[i] : 0.0;
-        uint8_t rgb[3];
-        colour(value, rgb);
-        for (uint8_t channel : rgb) put(out, channel);
-        put(out, float(value));
+        for (uint8_t channel : viridis((vertex_value[i] - low) / span)) put(out, channel);
+        put(out, float(vertex_value[i]));
     }
     // The cavity surface faces out of the cavity; the heat map faces the powder.
     for (const Triangle& t : surface.triangles) {

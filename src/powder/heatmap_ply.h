@@ -1,9 +1,10 @@
-//! Writes the drainability heat map: the cavity surface as a binary
-//! little-endian PLY whose vertices carry the drainability (0 = powder stays,
-//! 1 = it drains) as colours (red → yellow → green) and as a float `quality`
-//! property, as MeshLab and Blender read them. A vertex's value is the
-//! area-weighted mean over its triangles' patches. Written atomically
-//! (Error(IO) on failure, no partial file).
+//! Writes a heat map of a per-patch value on the cavity surface: a binary
+//! little-endian PLY whose vertices carry the value as a float `quality`
+//! property and as viridis colours over [low, high] (clamped), as MeshLab
+//! and Blender read them. A vertex's value is the area-weighted mean over
+//! its triangles' patches. The faces face the powder (the cavity surface
+//! turned inside out). Written atomically (Error(IO) on failure, no
+//! partial file).
 #pragma once
 
 #include <string>
@@ -14,7 +15,11 @@
 
 namespace fabvdb::powder {
 
-void write_heatmap_ply(const Mesh& surface, const CavityPatches& patches, const std::vector<double>& drainability,
-                       const std::string& path);
+//! The per-vertex values of `per_patch` (area-weighted means).
+std::vector<double> vertex_values(const Mesh& surface, const CavityPatches& patches,
+                                  const std::vector<double>& per_patch);
+
+void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_value, double low, double high,
+                       const std::string& description, const std::string& path);
 
 }  // namespace fabvdb::powder

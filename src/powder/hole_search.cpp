@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "powder/baseline_holes.h"
 
 namespace fabvdb::powder {
 
@@ -126,16 +127,40 @@ public:
 
     //! The best candidate within half the spacing of `hole` to add to `drain`'s holes.
     Choice best_move(const DrainabilityModel::Drain& drain, const DrainHole& hole, int only_cavity) {
-        std::vector<size_t> near;
-        for (size_t c = 0; c < candidates_.size(); ++c)
-            if (distance(candidates_[c], hole) < 0.5 * options_.min_center_distance &&
-                allowed(c, drain.holes, only_cavity))
-                near.push_back(c);
-        return best_of(drain, near);
+        return best_of(drain, near(hole, drain.holes, only_cavity));
+    }
+
+    //! The prediction's residual (mm³) of the candidates `chosen`.
+    double predicted(const std::vector<size_t>& chosen) { return model_.predicted_residual(predicted_drain(chosen)); }
+
+    //! best_move by the prediction: the best candidate within half the
+    //! spacing of `hole` to add to the candidates `others`.
+    Choice best_predicted_move(const std::vector<size_t>& others, const DrainHole& hole, int only_cavity) {
+        const DrainabilityModel::Crater surface = DrainabilityModel::Crater::surface;
+        std::vector<size_t> sites = near(hole, predicted_drain(others).holes, only_cavity);
+        compute_reaches(sites, surface, surface_reach_);
+        std::vector<double> residual(sites.size());
+        tbb::parallel_for(size_t(0), sites.size(), [&](size_t k) {
+            std::vector<size_t> with = others;
+            with.push_back(sites[k]);
+            residual[k] = model_.predicted_residual(drain_of(with, surface_reach_));
+        });
+        Choice best;
+        for (size_t k = 0; k < sites.size(); ++k)
+            if (!best.found || residual[k] < best.residual) best = {sites[k], residual[k], true};
+        return best;
     }
 
 private:
     using Reaches = std::vector<std::shared_ptr<const DrainabilityModel::Reach>>;
+    //! The allowed candidates within half the spacing of `hole`.
+    std::vector<size_t> near(const DrainHole& hole, const std::vector<DrainHole>& holes, int only_cavity) const {
+        std::vector<size_t> sites;
+        for (size_t c = 0; c < candidates_.size(); ++c)
+            if (distance(candidates_[c], hole) < 0.5 * options_.min_center_distance && allowed(c, holes, only_cavity))
+                sites.push_back(c);
+        return sites;
+    }
     void compute_reaches(const std::vector<size_t>& sites, DrainabilityModel::Crater crater, Reaches& reaches) const {
         tbb::parallel_for(size_t(0), sites.size(), [&](size_t k) {
             if (!reaches[sites[k]])
@@ -144,6 +169,10 @@ private:
     }
     DrainabilityModel::Drain drain(const std::vector<size_t>& chosen, DrainabilityModel::Crater crater, Reaches& reaches) {
         compute_reaches(chosen, crater, reaches);
+        return drain_of(chosen, reaches);
+    }
+    //! What `chosen` drain together from reaches already computed (thread-safe).
+    DrainabilityModel::Drain drain_of(const std::vector<size_t>& chosen, const Reaches& reaches) const {
         std::vector<DrainHole> holes;
         Reaches reached;
         for (size_t c : chosen) {
@@ -165,7 +194,8 @@ private:
 }  // namespace
 
 HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::vector<DrainHole>& candidates,
-                                    uint32_t cavity_count, const HoleSearchOptions& options, Progress& progress) {
+                                    uint32_t cavity_count, const Vec3& first_gravity, const HoleSearchOptions& options,
+                                    Progress& progress) {
     progress.stage("hole search");
     if (options.hole_count < 0) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the hole count cannot be negative");
     Search search(model, candidates, options);
@@ -233,15 +263,73 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     // The prediction is the surface of repose's, which keeps more than the
     // cone the search compares: in automatic mode holes go on being added
     // (by the cone's gain) while the prediction is over the target.
-    DrainabilityModel::Drain predicted = search.predicted_drain(chosen);
-    while (automatic && int(chosen.size()) < ceiling &&
-           model.predicted_residual(predicted) >= options.target_residual_fraction * total) {
+    // Automatic mode: holes are added while the prediction under the
+    // cleaning routine for them is over the target, then the hole whose loss
+    // the prediction (random routines) feels least is dropped while the
+    // routine's prediction stays under it: the fewest holes that meet it.
+    const double target = options.target_residual_fraction * total;
+    auto routine_kept = [&](const std::vector<size_t>& holes) {
+        const DrainabilityModel::Drain drained = search.predicted_drain(holes);
+        return model.routine_residual(drained, model.best_routine(drained, model.later_turns()));
+    };
+    while (automatic && int(chosen.size()) < ceiling && routine_kept(chosen) >= target) {
         progress.check();
         if (!add_best()) break;
-        predicted = search.predicted_drain(chosen);
     }
-    result.evaluation = model.evaluate(predicted);
+    while (automatic) {
+        progress.check();
+        Choice drop;
+        for (size_t h = 0; h < chosen.size(); ++h) {
+            if (count[candidates[chosen[h]].cavity] <= per_cavity) continue;
+            std::vector<size_t> others = chosen;
+            others.erase(others.begin() + long(h));
+            const double without = search.predicted(others);
+            if (!drop.found || without < drop.residual) drop = {h, without, true};
+        }
+        if (!drop.found) break;
+        std::vector<size_t> fewer = chosen;
+        fewer.erase(fewer.begin() + long(drop.candidate));
+        if (routine_kept(fewer) >= target) break;
+        --count[candidates[chosen[drop.candidate]].cavity];
+        chosen = std::move(fewer);
+    }
+
+    // The prediction (random routines) judges and polishes the result (see hole_search.h).
+    double kept = search.predicted(chosen);
+    const std::vector<size_t> lowest = baseline_holes(candidates, count, first_gravity, options.min_center_distance);
+    const double lowest_kept = search.predicted(lowest);
+    if (lowest_kept < kept) {
+        chosen = lowest;
+        kept = lowest_kept;
+        result.from_baseline = true;
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+        bool improved = false;
+        for (size_t h = 0; h < chosen.size(); ++h) {
+            progress.check();
+            std::vector<size_t> others = chosen;
+            others.erase(others.begin() + long(h));
+            const DrainHole& moved = candidates[chosen[h]];
+            const Choice choice = search.best_predicted_move(others, moved, int(moved.cavity));
+            if (!choice.found || choice.residual >= kept - negligible) continue;
+            chosen[h] = choice.candidate;
+            kept = choice.residual;
+            ++result.swaps;
+            improved = true;
+        }
+        if (!improved) break;
+    }
+    const DrainabilityModel::Drain drained = search.predicted_drain(chosen);
+    result.evaluation = model.evaluate(drained);
+    result.routine = model.best_routine(drained, model.later_turns());
+    result.routine_evaluation = model.evaluate(drained, {result.routine});
+    result.random_residuals = model.random_routine_residuals(drained);
+    const DrainabilityModel::Drain lowest_drained = search.predicted_drain(lowest);
+    result.baseline_evaluation = model.evaluate(lowest_drained);
+    result.baseline_routine_residual =
+        model.routine_residual(lowest_drained, model.best_routine(lowest_drained, model.later_turns()));
     for (size_t c : chosen) result.holes.push_back(candidates[c]);
+    for (size_t c : lowest) result.baseline.push_back(candidates[c]);
     progress.update(1.0);
     return result;
 }
