@@ -240,26 +240,33 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
         if (!add_best()) break;
     }
 
-    // Local swaps: move one hole to a better site nearby while that helps.
-    for (int pass = 0; pass < 2; ++pass) {
-        bool improved = false;
-        for (size_t h = 0; h < chosen.size(); ++h) {
-            progress.check();
-            std::vector<size_t> others = chosen;
-            others.erase(others.begin() + long(h));
-            const DrainHole& moved = candidates[chosen[h]];
-            const int only_cavity = count[moved.cavity] <= per_cavity ? int(moved.cavity) : -1;
-            const Choice choice = search.best_move(search.drain(others), moved, only_cavity);
-            if (!choice.found || choice.residual >= residual - negligible) continue;
-            --count[moved.cavity];
-            ++count[candidates[choice.candidate].cavity];
-            chosen[h] = choice.candidate;
-            residual = choice.residual;
-            ++result.swaps;
-            improved = true;
+    // Local swaps: move one hole to a better site nearby while that lowers
+    // `current`; `best_move(others, moved)` finds the best site for `moved`
+    // beside the holes `others`.
+    auto swap_holes = [&](double& current, auto best_move) {
+        for (int pass = 0; pass < 2; ++pass) {
+            bool improved = false;
+            for (size_t h = 0; h < chosen.size(); ++h) {
+                progress.check();
+                std::vector<size_t> others = chosen;
+                others.erase(others.begin() + long(h));
+                const DrainHole& moved = candidates[chosen[h]];
+                const Choice choice = best_move(others, moved);
+                if (!choice.found || choice.residual >= current - negligible) continue;
+                --count[moved.cavity];
+                ++count[candidates[choice.candidate].cavity];
+                chosen[h] = choice.candidate;
+                current = choice.residual;
+                ++result.swaps;
+                improved = true;
+            }
+            if (!improved) break;
         }
-        if (!improved) break;
-    }
+    };
+    swap_holes(residual, [&](const std::vector<size_t>& others, const DrainHole& moved) {
+        const int only_cavity = count[moved.cavity] <= per_cavity ? int(moved.cavity) : -1;
+        return search.best_move(search.drain(others), moved, only_cavity);
+    });
     // The prediction is the surface of repose's, which keeps more than the
     // cone the search compares: in automatic mode holes go on being added
     // (by the cone's gain) while the prediction is over the target.
@@ -303,22 +310,9 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
         kept = lowest_kept;
         result.from_baseline = true;
     }
-    for (int pass = 0; pass < 2; ++pass) {
-        bool improved = false;
-        for (size_t h = 0; h < chosen.size(); ++h) {
-            progress.check();
-            std::vector<size_t> others = chosen;
-            others.erase(others.begin() + long(h));
-            const DrainHole& moved = candidates[chosen[h]];
-            const Choice choice = search.best_predicted_move(others, moved, int(moved.cavity));
-            if (!choice.found || choice.residual >= kept - negligible) continue;
-            chosen[h] = choice.candidate;
-            kept = choice.residual;
-            ++result.swaps;
-            improved = true;
-        }
-        if (!improved) break;
-    }
+    swap_holes(kept, [&](const std::vector<size_t>& others, const DrainHole& moved) {
+        return search.best_predicted_move(others, moved, int(moved.cavity));
+    });
     const DrainabilityModel::Drain drained = search.predicted_drain(chosen);
     result.evaluation = model.evaluate(drained);
     result.routine = model.best_routine(drained, model.later_turns());
