@@ -10,7 +10,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev libboost-graph-dev libboost-dev libtbb-dev
   libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev
   lib3mf-dev libzip-dev libcairo2-dev libembree-dev nlohmann-json3-dev libgtest-dev
-  slurmctld slurmd slurm-client munge
+  slurmctld slurmd slurm-client munge procps
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

@@ -6,7 +6,9 @@
  *   directory "/where/it/ran"    relative paths below resolve from here
  *   hollow "in.stl" "-o" "out.stl" "--wall" "3mm"
  *
- * Tokens are bare words or double-quoted strings with \" and \\ escapes. */
+ * Tokens are bare words or double-quoted strings with \" and \\ escapes.
+ * `fabvdb batch` also reads 'task NAME' lines, 'line N' lines (in the plans it
+ * writes) and placeholders such as {input} (tools/batch_plan.h). */
 #ifndef FABVDB_JOB_H
 #define FABVDB_JOB_H
 

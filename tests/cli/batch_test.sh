@@ -1,5 +1,7 @@
 # batch_test.sh — --save-job writes a job that `fabvdb batch` replays to the
-# same result; malformed job files are refused with exit 2 and the line.
+# same result; a job file's lines run in order (a failing line ends the task
+# unless --keep-going), their output goes to the task's log in the state
+# folder; malformed job files are refused with exit 2 and the line.
 source "$(dirname "$0")/lib.sh"
 
 expect_exit 0 "$FABVDB" info "$MESHES/sphere.obj" --fit 50mm --report "$WORK/first.json" \
@@ -18,10 +20,13 @@ expect_match "$STDOUT" '^fabvdb info'
 printf 'fabvdb-job 1\ninfo "%s"\ninfo "%s/missing.obj"\ninfo "%s"\n' "$MESHES/sphere.obj" "$WORK" \
   "$MESHES/torus.obj" > "$WORK/mixed.job"
 expect_exit 2 "$FABVDB" batch "$WORK/mixed.job"
-expect_match "$STDOUT" 'sphere.obj'
-if printf '%s' "$STDOUT" | grep -q 'torus.obj'; then fail "batch went on after a failure"; else passed=$((passed + 1)); fi
+expect_match "$STDERR" 'missing.obj'
+expect_match "$(cat "$WORK/mixed.state/logs/mixed.log")" 'sphere.obj'
+if grep -q 'torus.obj' "$WORK/mixed.state/logs/mixed.log"; then fail "batch went on after a failure"; else passed=$((passed + 1)); fi
+expect_match "$(cat "$WORK/mixed.state/tasks/mixed.json")" '"failed_line": 3'
 expect_exit 2 "$FABVDB" batch "$WORK/mixed.job" --keep-going
-expect_match "$STDOUT" 'torus.obj'
+expect_match "$(cat "$WORK/mixed.state/logs/mixed.log")" 'torus.obj'
+expect_match "$(cat "$WORK/mixed.state/tasks/mixed.json")" '"status": "failed"'
 
 printf 'info "x.obj"\n' > "$WORK/no_header.job"
 expect_exit 2 "$FABVDB" batch "$WORK/no_header.job"

@@ -1,0 +1,89 @@
+/* batch_files.c — the inputs and outputs of a job line, from its command's
+ * option table (batch_files.h). */
+#include "batch_files.h"
+
+#include <string.h>
+#include <sys/stat.h>
+
+#include "commands.h"
+
+static const cli_option* find(const cli_command* command, const char* name, size_t length, char short_name) {
+    for (size_t i = 0; i < command->option_count + cli_common_option_count; ++i) {
+        const cli_option* option =
+            i < command->option_count ? &command->options[i] : &cli_common_options[i - command->option_count];
+        if (short_name ? option->short_name == short_name
+                       : strlen(option->name) == length && strncmp(option->name, name, length) == 0)
+            return option;
+    }
+    return NULL;
+}
+
+static int is_output_option(const char* name) {
+    return strcmp(name, "--output") == 0 || strcmp(name, "--report") == 0 || strcmp(name, "--heatmap") == 0 ||
+           strcmp(name, "--save-job") == 0;
+}
+
+static int is_regular_file(const char* path) {
+    struct stat info;
+    return stat(path, &info) == 0 && S_ISREG(info.st_mode);
+}
+
+int batch_line_files_of(const job_line* line, int check_inputs, batch_line_files* files, const char** error) {
+    memset(files, 0, sizeof *files);
+    const cli_command* command = line->count ? command_named(line->tokens[0]) : NULL;
+    if (!command) {
+        *error = "no such command";
+        return -1;
+    }
+    int only_positional = 0;
+    for (int a = 1; a < line->count; ++a) {
+        const char* arg = line->tokens[a];
+        if (!only_positional && strcmp(arg, "--") == 0) {
+            only_positional = 1;
+            continue;
+        }
+        if (only_positional || arg[0] != '-' || arg[1] == 0 || (arg[1] >= '0' && arg[1] <= '9')) {
+            if (files->input_count == BATCH_MAX_LINE_FILES) {
+                *error = "too many files on one line";
+                return -1;
+            }
+            files->inputs[files->input_count++] = arg;
+            continue;
+        }
+        const char* value = NULL;
+        const cli_option* option;
+        if (arg[1] == '-') {
+            const char* equals = strchr(arg, '=');
+            option = find(command, arg, equals ? (size_t)(equals - arg) : strlen(arg), 0);
+            if (equals) value = equals + 1;
+        } else {
+            option = arg[2] == 0 ? find(command, NULL, 0, arg[1]) : NULL;
+        }
+        if (!option) {
+            *error = "an option the command does not have";
+            return -1;
+        }
+        if (option->type == CLI_FLAG) continue;
+        if (!value) {
+            if (a + 1 >= line->count) {
+                *error = "an option without its value";
+                return -1;
+            }
+            value = line->tokens[++a];
+        }
+        if (strcmp(option->name, "--threads") == 0) files->threads = value;
+        if (strcmp(option->name, "--max-memory") == 0) files->max_memory = value;
+        if (option->type != CLI_STRING) continue;
+        if (strcmp(option->name, "--output") == 0) files->output = value;
+        if (strcmp(option->name, "--report") == 0) files->report = value;
+        const int output = is_output_option(option->name);
+        if (!output && check_inputs && !is_regular_file(value)) continue;
+        if ((output ? files->output_count : files->input_count) == BATCH_MAX_LINE_FILES) {
+            *error = "too many files on one line";
+            return -1;
+        }
+        if (output) files->outputs[files->output_count++] = value;
+        else files->inputs[files->input_count++] = value;
+    }
+    return 0;
+}
