@@ -2,6 +2,8 @@
  * option table (batch_files.h). */
 #include "batch_files.h"
 
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -87,3 +89,16 @@ int batch_line_files_of(const job_line* line, int check_inputs, batch_line_files
     }
     return 0;
 }
+
+char* batch_files_absolute(const char* directory, const char* path) {
+    const size_t length = strlen(directory) + strlen(path) + 2;
+    char* joined = malloc(length);
+    if (!joined) return NULL;
+    if (path[0] == '/') snprintf(joined, length, "%s", path);
+    else snprintf(joined, length, "%s/%s", directory, path);
+    return joined;
+}
+
+static int compare_names(const void* a, const void* b) { return strcmp(*(char* const*)a, *(char* const*)b); }
+
+void batch_files_sort(char** names, size_t count) { qsort(names, count, sizeof *names, compare_names); }

@@ -8,6 +8,8 @@
 #ifndef FABVDB_BATCH_FILES_H
 #define FABVDB_BATCH_FILES_H
 
+#include <stddef.h>
+
 #include "job.h"
 
 #define BATCH_MAX_LINE_FILES 32
@@ -28,5 +30,11 @@ typedef struct batch_line_files {
  * regular file; positional arguments always do. Returns 0, or -1 with *error
  * set to a static description (an unknown command or option, a missing value). */
 int batch_line_files_of(const job_line* line, int check_inputs, batch_line_files* files, const char** error);
+
+/* `path` resolved against `directory` (a path that starts with / as it is),
+ * newly allocated; NULL when out of memory. */
+char* batch_files_absolute(const char* directory, const char* path);
+/* Sorts file names bytewise, so listings come out the same on every machine. */
+void batch_files_sort(char** names, size_t count);
 
 #endif

@@ -15,6 +15,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "batch_atomic.h"
 #include "batch_files.h"
 #include "commands.h"
 
@@ -40,14 +41,6 @@ static int failf(char* error, size_t size, int code, const char* format, ...) {
     vsnprintf(error, size, format, args);
     va_end(args);
     return code;
-}
-
-static char* join_path(const char* directory, const char* path) {
-    if (path[0] == '/' || !directory) return strdup(path);
-    const size_t length = strlen(directory) + strlen(path) + 2;
-    char* joined = malloc(length);
-    if (joined) snprintf(joined, length, "%s/%s", directory, path);
-    return joined;
 }
 
 /* Checks the placeholders of one token; sets which kinds occur. */
@@ -117,7 +110,7 @@ static int read_source(const char* path, reader* r, char* error, size_t error_si
         const char* keyword = line.tokens[0];
         if (strcmp(keyword, "directory") == 0) {
             struct stat info;
-            char* next = line.count == 2 ? join_path(directory, line.tokens[1]) : NULL;
+            char* next = line.count == 2 ? batch_files_absolute(directory, line.tokens[1]) : NULL;
             if (!next || stat(next, &info) != 0 || !S_ISDIR(info.st_mode)) {
                 code = failf(error, error_size, 2, "bad input: %s:%d: cannot enter the directory '%s'", path, number,
                              line.count > 1 ? line.tokens[1] : "");
@@ -220,8 +213,6 @@ static int is_mesh_name(const char* name) {
     return 0;
 }
 
-static int compare_strings(const void* a, const void* b) { return strcmp(*(char* const*)a, *(char* const*)b); }
-
 /* The input files of --inputs, absolute and sorted. */
 static int list_inputs(const char* pattern, char*** out, int* count, char* error, size_t error_size) {
     struct stat info;
@@ -233,7 +224,7 @@ static int list_inputs(const char* pattern, char*** out, int* count, char* error
         struct dirent* entry;
         while ((entry = readdir(folder))) {
             if (entry->d_name[0] == '.' || !is_mesh_name(entry->d_name)) continue;
-            char* path = join_path(pattern, entry->d_name);
+            char* path = batch_files_absolute(pattern, entry->d_name);
             if (path && stat(path, &info) == 0 && S_ISREG(info.st_mode)) {
                 names = realloc(names, (n + 1) * sizeof *names);
                 names[n++] = path;
@@ -265,7 +256,7 @@ static int list_inputs(const char* pattern, char*** out, int* count, char* error
             names[i] = absolute;
         }
     }
-    qsort(names, n, sizeof *names, compare_strings);
+    batch_files_sort(names, n);
     *out = names;
     *count = (int)n;
     return 0;
@@ -366,7 +357,7 @@ static char* output_of(const batch_plan_line* line) {
     batch_line_files files;
     const char* problem;
     if (batch_line_files_of(&line->line, 0, &files, &problem) != 0 || !files.output) return NULL;
-    return join_path(line->directory, files.output);
+    return batch_files_absolute(line->directory, files.output);
 }
 
 static char* job_stem(const char* job_path) { return task_name_of(job_path); }
@@ -410,7 +401,7 @@ int batch_plan_read(const char* job_path, const char* inputs, const char* out, b
                 code = failf(error, error_size, 2, "bad input: --inputs: %s and %s both make the task '%s' (the same stem)",
                              plan->tasks[batch_plan_find(plan, stem)].input, names[k], stem);
             } else if (stem) {
-                task_out = out_root ? join_path(out_root, stem) : NULL;
+                task_out = out_root ? batch_files_absolute(out_root, stem) : NULL;
                 const char* base = strrchr(names[k], '/');
                 const char* raw_stem_end = strrchr(base + 1, '.');
                 char raw_stem[4096];
@@ -501,15 +492,9 @@ static void write_literal(FILE* out, const char* token) {
 }
 
 int batch_plan_write(const batch_plan* plan, const char* source, const char* path) {
-    const size_t length = strlen(path) + 16;
-    char* temp = malloc(length);
-    if (!temp) return -1;
-    snprintf(temp, length, "%s.partial-plan", path);
-    FILE* out = fopen(temp, "w");
-    if (!out) {
-        free(temp);
-        return -1;
-    }
+    batch_atomic file;
+    if (batch_atomic_open(&file, path) != 0) return -1;
+    FILE* out = file.out;
     fprintf(out, "fabvdb-job %d\n# the %d task(s) of %s, written by fabvdb batch; an array task runs one with --task\n",
             JOB_FORMAT_VERSION, plan->task_count, source);
     const char* directory = NULL;
@@ -542,13 +527,7 @@ int batch_plan_write(const batch_plan* plan, const char* source, const char* pat
             fputc('\n', out);
         }
     }
-    int failed = ferror(out) != 0;
-    failed |= fflush(out) != 0 || fsync(fileno(out)) != 0;
-    failed |= fclose(out) != 0;
-    if (!failed) failed = rename(temp, path) != 0;
-    if (failed) remove(temp);
-    free(temp);
-    return failed ? -1 : 0;
+    return batch_atomic_commit(&file);
 }
 
 void batch_plan_free(batch_plan* plan) {

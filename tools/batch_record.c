@@ -13,6 +13,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "batch_atomic.h"
+#include "batch_files.h"
 #include "batch_json.h"
 
 double batch_now(void) {
@@ -29,8 +31,6 @@ void batch_format_time(double seconds, char* text, size_t size) {
     strftime(base, sizeof base, "%Y-%m-%dT%H:%M:%S", &utc);
     snprintf(text, size, "%s.%03dZ", base, (int)((seconds - (double)whole) * 1000.0));
 }
-
-static int compare_strings(const void* a, const void* b) { return strcmp(*(char* const*)a, *(char* const*)b); }
 
 int batch_file_list_add(batch_file_list* list, const char* path) {
     struct stat info;
@@ -49,7 +49,7 @@ int batch_file_list_add(batch_file_list* list, const char* path) {
             names[n++] = strdup(entry->d_name);
         }
         closedir(folder);
-        qsort(names, n, sizeof *names, compare_strings);
+        batch_files_sort(names, n);
         int code = 0;
         for (size_t i = 0; i < n; ++i) {
             char child[8192];
@@ -109,17 +109,9 @@ static void write_time(FILE* out, const char* key, double seconds) {
 }
 
 int batch_record_write(const batch_record* record, const char* path) {
-    char temp[8192];
-    snprintf(temp, sizeof temp, "%s.partial-XXXXXX", path);
-    const int fd = mkstemp(temp);
-    if (fd < 0) return -1;
-    fchmod(fd, 0644);
-    FILE* out = fdopen(fd, "w");
-    if (!out) {
-        close(fd);
-        unlink(temp);
-        return -1;
-    }
+    batch_atomic file;
+    if (batch_atomic_open(&file, path) != 0) return -1;
+    FILE* out = file.out;
     const batch_task* task = record->task;
     fprintf(out, "{\n  \"format\": \"%s\",\n  \"task\": ", BATCH_RECORD_FORMAT);
     json_write_string(out, task->name);
@@ -188,23 +180,7 @@ int batch_record_write(const batch_record* record, const char* path) {
         fputc('}', out);
     }
     fputs("]\n}\n", out);
-    int failed = ferror(out) != 0 || fflush(out) != 0 || fsync(fd) != 0;
-    failed |= fclose(out) != 0;
-    if (!failed) failed = rename(temp, path) != 0;
-    if (failed) {
-        unlink(temp);
-        return -1;
-    }
-    char folder[8192];
-    snprintf(folder, sizeof folder, "%s", path);
-    char* slash = strrchr(folder, '/');
-    if (slash) *slash = 0;
-    const int folder_fd = open(slash ? folder : ".", O_RDONLY | O_DIRECTORY);
-    if (folder_fd >= 0) {
-        fsync(folder_fd);
-        close(folder_fd);
-    }
-    return 0;
+    return batch_atomic_commit(&file);
 }
 
 /* Whether every file of the record's list `key` still has its hash. */

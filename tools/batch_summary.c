@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "batch_atomic.h"
 #include "batch_json.h"
 #include "batch_plan.h"
 #include "batch_record.h"
@@ -95,17 +96,9 @@ static void write_task(FILE* out, const batch_task* task, const task_state* s, i
 
 static int write_json(const char* path, const char* state, const batch_plan* plan, const task_state* states,
                       const batch_counts* counts, int figures) {
-    char temp[8192];
-    snprintf(temp, sizeof temp, "%s.partial-XXXXXX", path);
-    const int fd = mkstemp(temp);
-    if (fd < 0) return -1;
-    fchmod(fd, 0644);
-    FILE* out = fdopen(fd, "w");
-    if (!out) {
-        close(fd);
-        unlink(temp);
-        return -1;
-    }
+    batch_atomic file;
+    if (batch_atomic_open(&file, path) != 0) return -1;
+    FILE* out = file.out;
     char now[64];
     batch_format_time(batch_now(), now, sizeof now);
     fprintf(out, "{\n  \"format\": \"%s\",\n  \"state\": ", figures ? "fabvdb-batch-report 1" : "fabvdb-batch-status 1");
@@ -118,11 +111,7 @@ static int write_json(const char* path, const char* state, const batch_plan* pla
         fputs(k + 1 < plan->task_count ? ",\n" : "\n", out);
     }
     fputs("  ]\n}\n", out);
-    int failed = ferror(out) != 0 || fflush(out) != 0 || fsync(fd) != 0;
-    failed |= fclose(out) != 0;
-    if (!failed) failed = rename(temp, path) != 0;
-    if (failed) unlink(temp);
-    return failed ? -1 : 0;
+    return batch_atomic_commit(&file);
 }
 
 int batch_summary(const char* state, int print, const char* report_path, batch_counts* counts) {

@@ -18,15 +18,6 @@
 #include "batch_files.h"
 #include "cli.h"
 
-static char* absolute(const char* directory, const char* path) {
-    const size_t length = strlen(directory) + strlen(path) + 2;
-    char* joined = malloc(length);
-    if (!joined) return NULL;
-    if (path[0] == '/') snprintf(joined, length, "%s", path);
-    else snprintf(joined, length, "%s/%s", directory, path);
-    return joined;
-}
-
 /* Removes the temporary files (NAME.partial-*) a killed command left in `folder`. */
 static void remove_partials(const char* folder) {
     DIR* listing = opendir(folder);
@@ -84,7 +75,7 @@ int batch_task_begin(batch_task_run* run, const batch_task* task, const char* st
         const char* problem;
         if (batch_line_files_of(&line->line, 1, &files, &problem) != 0) continue;
         for (int k = 0; k < files.input_count; ++k) {
-            char* path_k = absolute(line->directory, files.inputs[k]);
+            char* path_k = batch_files_absolute(line->directory, files.inputs[k]);
             int produced = 0;
             for (int w = 0; path_k && w < written.count; ++w)
                 produced |= strcmp(written.files[w].path, path_k) == 0 ||
@@ -97,7 +88,7 @@ int batch_task_begin(batch_task_run* run, const batch_task* task, const char* st
             batch_file_hash* grown = realloc(written.files, (size_t)(written.count + 1) * sizeof *grown);
             if (!grown) break;
             written.files = grown;
-            written.files[written.count].path = absolute(line->directory, files.outputs[k]);
+            written.files[written.count].path = batch_files_absolute(line->directory, files.outputs[k]);
             if (written.files[written.count].path) ++written.count;
         }
     }
@@ -261,11 +252,11 @@ int batch_task_end(batch_task_run* run) {
         const char* problem;
         if (batch_line_files_of(&line->line, 0, &files, &problem) != 0) continue;
         for (int k = 0; k < files.output_count; ++k) {
-            char* path = absolute(line->directory, files.outputs[k]);
+            char* path = batch_files_absolute(line->directory, files.outputs[k]);
             if (path) batch_file_list_add(&record->outputs, path);
             free(path);
         }
-        char* report = files.report ? absolute(line->directory, files.report) : NULL;
+        char* report = files.report ? batch_files_absolute(line->directory, files.report) : NULL;
         struct stat info;
         if (report && stat(report, &info) == 0) {
             char** grown = realloc(record->reports, (size_t)(record->report_count + 1) * sizeof *grown);
