@@ -122,7 +122,7 @@ SelectType=select/cons_tres
 SelectTypeParameters=CR_Core_Memory
 DefMemPerCPU=$((memory / cpus / 2))
 SchedulerType=sched/backfill
-SchedulerParameters=batch_sched_delay=0,sched_interval=1,defer
+SchedulerParameters=batch_sched_delay=0,sched_interval=1
 JobCompType=jobcomp/filetxt
 JobCompLoc=$dir/jobcomp.log
 AccountingStorageType=accounting_storage/none
