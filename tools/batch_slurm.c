@@ -215,8 +215,8 @@ int batch_slurm_submit(const batch_plan* plan, const int* todo, int todo_count, 
         return CLI_EXIT_BAD_INPUT;
     }
     if (!options->quiet)
-        fprintf(stderr, "batch: submitted %d task(s) as Slurm job array %s (%s%s, %d task(s) per index)\n", todo_count,
-                job, array + 8, options->max_running > 0 ? "" : "", chunk);
+        fprintf(stderr, "batch: submitted %d task(s) as Slurm job array %s (indices %s, %d task(s) per index)\n",
+                todo_count, job, array + strlen("--array="), chunk);
     if (!options->wait) {
         if (!options->quiet) fprintf(stderr, "batch: follow it with: fabvdb batch --status %s\n", options->state);
         return CLI_EXIT_OK;

@@ -1,7 +1,8 @@
 # batch_slurm_test.sh — `fabvdb batch --slurm` on a real single-node Slurm
 # brought up here by tests/slurm/local_slurm.sh (munged, slurmctld, slurmd
 # from Debian's packages, under a temporary folder, stopped by PID at the end):
-# a recipe over five parts goes out as one job array; one part is broken (its
+# a recipe over five parts goes out as one job array (two tasks per index, the
+# cluster's MaxArraySize being 4); one part is broken (its
 # task fails and says why in its record), one hangs (its command is stopped
 # with SIGSTOP, as on a dead file server) and is killed by Slurm at --time 1,
 # which --status reports from Slurm since that task wrote no record; the good
@@ -22,7 +23,9 @@ if [ "$(id -u)" -ne 0 ]; then
   exit 0
 fi
 code=0
-started="$(bash "$SOURCE/tests/slurm/local_slurm.sh" start "$slurm_dir" 2>"$WORK/slurm.err")" || code=$?
+# A small MaxArraySize, so the five tasks go out in chunks of two per index.
+started="$(LOCAL_SLURM_CONF_EXTRA="MaxArraySize=4" bash "$SOURCE/tests/slurm/local_slurm.sh" start "$slurm_dir" \
+  2>"$WORK/slurm.err")" || code=$?
 if [ "$code" -eq 3 ]; then
   echo "######## SKIPPED: Slurm's daemons cannot start on this machine:" >&2
   cat "$WORK/slurm.err" >&2
@@ -66,11 +69,14 @@ run_batch() {  # run_batch EXPECTED_EXIT ARGS...: the recipe through Slurm, wait
 stopper=$!
 run_batch 2
 wait "$stopper"
-expect_match "$STDERR" 'submitted 5 task(s) as Slurm job array [0-9]'
+expect_match "$STDERR" 'submitted 5 task(s) as Slurm job array [0-9]* (indices 0-2%3, 2 task(s) per index)'
 expect_match "$STDOUT" '5 task(s): 3 done, 2 failed, 0 pending'
 job="$(cut -f1 "$state/slurm/submissions.tsv" | head -n 1)"
 expect_match "$STDOUT" "failed   broken (exit 2, job line 2): fabvdb repair: .*broken.stl"
-expect_match "$STDOUT" "failed   slow: Slurm job ${job}_[0-9] TIMEOUT (reason TimeLimit), no record"
+expect_match "$STDOUT" "failed   slow: Slurm job ${job}_2 TIMEOUT (reason TimeLimit), no record"
+# Index 0 ran ball and broken, one after the other.
+expect_match "$(cat "$state/tasks/ball.json")" "\"slurm_job\": \"${job}_0\""
+expect_match "$(cat "$state/tasks/broken.json")" "\"slurm_job\": \"${job}_0\""
 expect_exit 0 test -s "$WORK/stopped"
 for part in ball ring bunny; do
   record="$state/tasks/$part.json"

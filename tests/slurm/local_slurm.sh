@@ -11,7 +11,9 @@
 #                              line to source: export SLURM_CONF=DIR/slurm.conf
 #   local_slurm.sh stop DIR    stop every daemon it started, by PID
 #
-# Runs as root (slurmd starts the jobs as their users). Exit codes of start:
+# LOCAL_SLURM_CONF_EXTRA holds lines to add to slurm.conf (e.g.
+# MaxArraySize=4). Runs as root (slurmd starts the jobs as their users).
+# Exit codes of start:
 # 0 up, 3 the daemons could not start on this machine (the reason is
 # printed), 1 usage or a missing package.
 set -u
@@ -134,6 +136,7 @@ MessageTimeout=10
 MinJobAge=300
 NodeName=localhost NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$memory State=UNKNOWN
 PartitionName=local Nodes=localhost Default=YES MaxTime=INFINITE State=UP
+${LOCAL_SLURM_CONF_EXTRA:-}
 CONF
   export SLURM_CONF="$dir/slurm.conf"
   slurmctld -D -i -f "$SLURM_CONF" >>"$dir/slurmctld.log" 2>&1 &
