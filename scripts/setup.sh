@@ -11,6 +11,7 @@ packages=(
   libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev
   lib3mf-dev libzip-dev libcairo2-dev libembree-dev nlohmann-json3-dev libgtest-dev
   slurmctld slurmd slurm-client munge procps
+  python3 time
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

@@ -1,0 +1,524 @@
+// corpus_check — the independent checker of bench/corpus (GPL-3.0-or-later).
+//
+// Measures what fabvdb wrote without using fabvdb's own validity, inspection
+// or repair code: written STL files are read by a reader of its own (float
+// coordinates exactly as stored, corners welded only where they are bit-equal);
+// closedness, 2-manifoldness, float degeneracy and the height-field test come
+// from tests/support (own ray casting), self-intersection and distances from
+// CGAL (exact predicates, AABB tree), orientation from ray parity probes.
+// Only the corpus *inputs* are read with fabvdb's file readers (3MF, PLY, …),
+// scaled about the origin as `--fit` does. Each mode prints one JSON object:
+//
+//   corpus_check solid FILE [--reference IN --fit LEN] [--cavity-wall] [--direction X,Y,Z]
+//       validity of FILE; with --reference, sampled distances input<->FILE (mm);
+//       --cavity-wall: distances from the cavity shells to the outer shells
+//       (the wall as built); --direction: the double-height-field ray test.
+//   corpus_check input IN --fit LEN
+//       the same validity measures on a corpus input (is it a clean solid?).
+//   corpus_check cover IN --fit LEN PART.stl...
+//       distance from the input surface to the nearest of the parts (mold
+//       faithfulness): max and area-weighted mean, mm, and the input diagonal.
+//   corpus_check decomposition D.json
+//       tests/support's decomposition checks (ownership, pieces, energies).
+//
+// Cost: O(n log n) in the triangles for the distance and orientation probes,
+// plus CGAL's self-intersection test; seconds for a few 100k triangles.
+#include <gtest/gtest.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/progress.h"
+#include "io/mesh_io.h"
+#include "support/decomposition_checks.h"
+#include "support/ray_cast.h"
+
+namespace {
+
+using fabvdb::Mesh;
+using fabvdb::Vec3;
+using nlohmann::json;
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Triangle3 = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+struct Failure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+//! Binary or ASCII STL as stored: float coordinates, corners welded where their
+//! three floats are bit-equal, nothing else changed.
+Mesh read_stl_as_stored(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Failure("cannot open " + path);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<std::array<float, 3>> corners;
+    bool binary = bytes.size() >= 84;
+    uint32_t count = 0;
+    if (binary) {
+        std::memcpy(&count, bytes.data() + 80, 4);
+        binary = bytes.size() == 84 + size_t(count) * 50;
+    }
+    if (binary) {
+        for (uint32_t i = 0; i < count; ++i)
+            for (int k = 0; k < 3; ++k) {
+                std::array<float, 3> p;
+                std::memcpy(p.data(), bytes.data() + 84 + size_t(i) * 50 + 12 + 12 * k, 12);
+                corners.push_back(p);
+            }
+    } else {
+        std::istringstream text(bytes);
+        std::string word;
+        while (text >> word)
+            if (word == "vertex") {
+                std::array<float, 3> p;
+                if (!(text >> p[0] >> p[1] >> p[2])) throw Failure("malformed ASCII STL vertex in " + path);
+                corners.push_back(p);
+            }
+        if (corners.size() % 3) throw Failure("ASCII STL with a partial facet: " + path);
+    }
+    Mesh mesh;
+    std::map<std::array<uint32_t, 3>, uint32_t> index;
+    for (size_t c = 0; c < corners.size(); c += 3) {
+        fabvdb::Triangle t;
+        for (int k = 0; k < 3; ++k) {
+            std::array<uint32_t, 3> key;
+            std::memcpy(key.data(), corners[c + k].data(), 12);
+            auto [it, added] = index.emplace(key, uint32_t(mesh.vertices.size()));
+            if (added) mesh.vertices.push_back({corners[c + k][0], corners[c + k][1], corners[c + k][2]});
+            t[k] = it->second;
+        }
+        mesh.triangles.push_back(t);
+    }
+    return mesh;
+}
+
+//! A corpus input scaled as `fabvdb --fit LEN` scales it: about the origin, so
+//! that the longest side of the box of all its vertices is `fit` (0: as read).
+Mesh read_input(const std::string& path, double fit) {
+    fabvdb::Progress progress;
+    Mesh mesh = fabvdb::io::read_mesh(path, progress);
+    if (fit <= 0) return mesh;
+    double longest = 0;
+    for (int k = 0; k < 3; ++k) {
+        double lo = 1e300, hi = -1e300;
+        for (const Vec3& p : mesh.vertices) lo = std::min(lo, p[k]), hi = std::max(hi, p[k]);
+        longest = std::max(longest, hi - lo);
+    }
+    if (!(longest > 0) || !std::isfinite(longest)) throw Failure(path + ": no extent to fit");
+    const double scale = fit / longest;
+    for (Vec3& p : mesh.vertices)
+        for (double& c : p) c *= scale;
+    return mesh;
+}
+
+struct Box {
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    double diagonal() const { return norm(sub(hi, lo)); }
+};
+Box box_of(const Mesh& mesh) {
+    Box b;
+    for (const auto& t : mesh.triangles)
+        for (uint32_t v : t)
+            for (int k = 0; k < 3; ++k) {
+                b.lo[k] = std::min(b.lo[k], mesh.vertices[v][k]);
+                b.hi[k] = std::max(b.hi[k], mesh.vertices[v][k]);
+            }
+    return b;
+}
+
+bool finite(const Mesh& mesh) {
+    for (const Vec3& p : mesh.vertices)
+        for (double c : p)
+            if (!std::isfinite(c)) return false;
+    return true;
+}
+
+//! Connected pieces of triangles joined across shared (undirected) edges.
+std::vector<uint32_t> shell_labels(const Mesh& mesh, uint32_t& count) {
+    std::vector<uint32_t> parent(mesh.triangles.size());
+    for (uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto find = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> first;
+    for (uint32_t i = 0; i < mesh.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            auto key = std::minmax(mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3]);
+            auto [it, added] = first.emplace(key, i);
+            if (!added) parent[find(i)] = find(it->second);
+        }
+    std::map<uint32_t, uint32_t> number;
+    std::vector<uint32_t> label(parent.size());
+    for (uint32_t i = 0; i < parent.size(); ++i) {
+        auto [it, added] = number.emplace(find(i), uint32_t(number.size()));
+        label[i] = it->second;
+    }
+    count = uint32_t(number.size());
+    return label;
+}
+
+double area_of(const Mesh& m, const fabvdb::Triangle& t) {
+    return 0.5 * norm(cross(sub(m.vertices[t[1]], m.vertices[t[0]]), sub(m.vertices[t[2]], m.vertices[t[0]])));
+}
+
+//! About `count` points spread over the triangles by area (fixed seed), plus
+//! every vertex a triangle uses when `with_vertices`.
+std::vector<Vec3> surface_samples(const Mesh& mesh, const std::vector<uint32_t>& triangles, size_t count,
+                                  bool with_vertices) {
+    std::vector<Vec3> points;
+    double total = 0;
+    for (uint32_t i : triangles) total += area_of(mesh, mesh.triangles[i]);
+    std::mt19937 random(2024);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double carry = 0;
+    for (uint32_t i : triangles) {
+        const auto& t = mesh.triangles[i];
+        if (with_vertices) points.push_back(mesh.vertices[t[0]]);
+        carry += total > 0 ? count * area_of(mesh, t) / total : 0;
+        for (; carry >= 1; carry -= 1) {
+            double a = unit(random), b = unit(random);
+            if (a + b > 1) a = 1 - a, b = 1 - b;
+            Vec3 p;
+            for (int k = 0; k < 3; ++k)
+                p[k] = mesh.vertices[t[0]][k] + a * (mesh.vertices[t[1]][k] - mesh.vertices[t[0]][k]) +
+                       b * (mesh.vertices[t[2]][k] - mesh.vertices[t[0]][k]);
+            points.push_back(p);
+        }
+    }
+    return points;
+}
+
+std::vector<uint32_t> all_triangles(const Mesh& mesh) {
+    std::vector<uint32_t> all(mesh.triangles.size());
+    for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+    return all;
+}
+
+struct Distances {
+    double max = 0, mean = 0;
+    size_t samples = 0;
+};
+
+//! Distances from `points` to the triangles `targets` of the meshes.
+Distances distances(const std::vector<Vec3>& points, const std::vector<Triangle3>& targets) {
+    Distances d;
+    if (targets.empty() || points.empty()) return d;
+    Tree tree(targets.begin(), targets.end());
+    tree.accelerate_distance_queries();
+    double sum = 0;
+    for (const Vec3& p : points) {
+        const double r = std::sqrt(tree.squared_distance(Kernel::Point_3(p[0], p[1], p[2])));
+        d.max = std::max(d.max, r);
+        sum += r;
+    }
+    d.samples = points.size();
+    d.mean = sum / points.size();
+    return d;
+}
+
+std::vector<Triangle3> triangles_of(const Mesh& mesh, const std::vector<uint32_t>& which) {
+    std::vector<Triangle3> out;
+    for (uint32_t i : which) {
+        const auto& t = mesh.triangles[i];
+        auto p = [&](int k) {
+            const Vec3& v = mesh.vertices[t[k]];
+            return Kernel::Point_3(v[0], v[1], v[2]);
+        };
+        if (!Kernel::Triangle_3(p(0), p(1), p(2)).is_degenerate()) out.emplace_back(p(0), p(1), p(2));
+    }
+    return out;
+}
+
+json distance_json(const Distances& d) { return {{"max", d.max}, {"mean", d.mean}, {"samples", d.samples}}; }
+
+//! Validity of a mesh as stored plus per-shell orientation by parity probes:
+//! a point just in front of a triangle must be outside the solid and one just
+//! behind it inside, on the majority of a shell's largest triangles.
+json validity(const Mesh& mesh, std::vector<uint32_t>& labels, std::vector<int>& shell_sign) {
+    json out;
+    out["triangles"] = mesh.triangles.size();
+    out["vertices"] = mesh.vertices.size();
+    if (mesh.triangles.empty()) {
+        out["valid"] = false;
+        out["defects"] = {"no triangles"};
+        return out;
+    }
+    std::vector<std::string> defects;
+    if (!finite(mesh)) defects.push_back("non-finite coordinate");
+    const size_t degenerate = fabvdb::test::degenerate_triangle_count(fabvdb::test::stored_as_float(mesh));
+    out["degenerate_triangles"] = degenerate;
+    if (degenerate) defects.push_back(std::to_string(degenerate) + " degenerate triangles as float");
+    const bool manifold = fabvdb::test::closed_two_manifold(mesh);
+    out["closed_two_manifold"] = manifold;
+    if (!manifold) defects.push_back("not closed, 2-manifold and consistently oriented");
+    if (manifold && defects.empty()) {
+        const bool crossing = fabvdb::test::self_intersects(mesh);
+        out["self_intersects"] = crossing;
+        if (crossing) defects.push_back("self-intersecting");
+    }
+    uint32_t shells = 0;
+    labels = shell_labels(mesh, shells);
+    out["shells"] = shells;
+    shell_sign.assign(shells, 0);
+    if (manifold && defects.empty()) {
+        const Box box = box_of(mesh);
+        fabvdb::test::LineCaster caster(mesh, Vec3{0.0123, 0.0371, 1.0});
+        std::vector<std::vector<std::pair<double, uint32_t>>> by_shell(shells);
+        for (uint32_t i = 0; i < mesh.triangles.size(); ++i)
+            by_shell[labels[i]].push_back({area_of(mesh, mesh.triangles[i]), i});
+        size_t inward = 0, undecided = 0;
+        for (uint32_t s = 0; s < shells; ++s) {
+            auto& list = by_shell[s];
+            std::partial_sort(list.begin(), list.begin() + std::min<size_t>(7, list.size()), list.end(),
+                              [](auto& a, auto& b) { return a.first > b.first; });
+            int votes = 0;
+            for (size_t j = 0; j < std::min<size_t>(7, list.size()); ++j) {
+                const auto& t = mesh.triangles[list[j].second];
+                const Vec3 n = cross(sub(mesh.vertices[t[1]], mesh.vertices[t[0]]),
+                                     sub(mesh.vertices[t[2]], mesh.vertices[t[0]]));
+                const double length = norm(n);
+                const double eps = std::min(1e-4 * box.diagonal(), 0.05 * std::sqrt(list[j].first));
+                Vec3 front, back;
+                for (int k = 0; k < 3; ++k) {
+                    const double c = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3;
+                    front[k] = c + eps * n[k] / length;
+                    back[k] = c - eps * n[k] / length;
+                }
+                const bool in_front = caster.inside(front), in_back = caster.inside(back);
+                votes += (!in_front && in_back) ? 1 : (in_front && !in_back) ? -1 : 0;
+            }
+            shell_sign[s] = votes > 0 ? 1 : votes < 0 ? -1 : 0;
+            inward += votes < 0;
+            undecided += votes == 0;
+        }
+        out["inward_shells"] = inward;
+        if (inward) defects.push_back(std::to_string(inward) + " shells facing inward");
+        if (undecided) defects.push_back(std::to_string(undecided) + " shells of undecided orientation");
+        double volume = 0;
+        for (const auto& t : mesh.triangles) {
+            const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+            volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                       a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+        }
+        out["volume"] = volume;
+        if (!(volume > 0)) defects.push_back("volume not positive");
+    }
+    out["valid"] = defects.empty();
+    out["defects"] = defects;
+    return out;
+}
+
+//! Signed volume of each shell (divergence theorem).
+std::vector<double> shell_volumes(const Mesh& mesh, const std::vector<uint32_t>& labels, size_t shells) {
+    std::vector<double> volume(shells, 0.0);
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const auto& t = mesh.triangles[i];
+        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        volume[labels[i]] += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                              a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    }
+    return volume;
+}
+
+std::string option(int argc, char** argv, const std::string& name, const std::string& fallback = "") {
+    for (int i = 0; i + 1 < argc; ++i)
+        if (name == argv[i]) return argv[i + 1];
+    return fallback;
+}
+bool flag(int argc, char** argv, const std::string& name) {
+    for (int i = 0; i < argc; ++i)
+        if (name == argv[i]) return true;
+    return false;
+}
+
+constexpr size_t kSamples = 40000;  // area samples per surface: ~0.5% miss chance per 1/8000 of the area
+
+json check_solid(int argc, char** argv) {
+    const std::string path = argv[2];
+    const Mesh mesh = read_stl_as_stored(path);
+    std::vector<uint32_t> labels;
+    std::vector<int> sign;
+    json out = validity(mesh, labels, sign);
+    out["file"] = path;
+    const Box box = box_of(mesh);
+    out["diagonal"] = box.diagonal();
+    const std::string reference = option(argc, argv, "--reference");
+    if (!reference.empty()) {
+        const Mesh input = read_input(reference, std::stod(option(argc, argv, "--fit", "0")));
+        const auto input_triangles = triangles_of(input, all_triangles(input));
+        const auto output_triangles = triangles_of(mesh, all_triangles(mesh));
+        out["input_diagonal"] = box_of(input).diagonal();
+        out["input_to_output"] =
+            distance_json(distances(surface_samples(input, all_triangles(input), kSamples, true), output_triangles));
+        out["output_to_input"] =
+            distance_json(distances(surface_samples(mesh, all_triangles(mesh), kSamples, true), input_triangles));
+    }
+    if (flag(argc, argv, "--cavity-wall") && out["valid"].get<bool>()) {
+        const auto volume = shell_volumes(mesh, labels, sign.size());
+        std::vector<uint32_t> cavity, outer;
+        size_t cavities = 0;
+        for (size_t s = 0; s < volume.size(); ++s) cavities += volume[s] < 0;
+        for (uint32_t i = 0; i < mesh.triangles.size(); ++i) (volume[labels[i]] < 0 ? cavity : outer).push_back(i);
+        out["cavity_shells"] = cavities;
+        if (!cavity.empty()) {
+            // The wall as built: from every cavity point to the nearest outer surface.
+            const auto points = surface_samples(mesh, cavity, kSamples, true);
+            Tree tree;
+            const auto targets = triangles_of(mesh, outer);
+            tree.insert(targets.begin(), targets.end());
+            tree.accelerate_distance_queries();
+            std::vector<double> r;
+            for (const Vec3& p : points) r.push_back(std::sqrt(tree.squared_distance(Kernel::Point_3(p[0], p[1], p[2]))));
+            std::sort(r.begin(), r.end());
+            out["wall"] = {{"min", r.front()}, {"p01", r[r.size() / 100]}, {"median", r[r.size() / 2]},
+                           {"max", r.back()}, {"samples", r.size()}};
+        }
+    }
+    const std::string direction = option(argc, argv, "--direction");
+    if (!direction.empty()) {
+        Vec3 d;
+        if (std::sscanf(direction.c_str(), "%lf,%lf,%lf", &d[0], &d[1], &d[2]) != 3) throw Failure("bad --direction");
+        const auto lines = fabvdb::test::check_double_height_field(mesh, d, 150);
+        out["height_field"] = {{"lines", lines.lines},
+                               {"lines_over_two", lines.lines_over_two},
+                               {"odd_lines", lines.odd_lines},
+                               {"max_crossings", lines.max_crossings}};
+    }
+    return out;
+}
+
+json check_input(int argc, char** argv) {
+    Mesh mesh = read_input(argv[2], std::stod(option(argc, argv, "--fit", "0")));
+    json out;
+    out["file"] = argv[2];
+    // Judged as a binary STL would store it: corners rounded to float and welded.
+    mesh = fabvdb::test::stored_as_float(mesh);
+    std::map<Vec3, uint32_t> index;
+    std::vector<uint32_t> remap(mesh.vertices.size());
+    Mesh welded;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        auto [it, added] = index.emplace(mesh.vertices[v], uint32_t(welded.vertices.size()));
+        if (added) welded.vertices.push_back(mesh.vertices[v]);
+        remap[v] = it->second;
+    }
+    for (auto t : mesh.triangles) welded.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
+    std::vector<uint32_t> labels;
+    std::vector<int> sign;
+    json v = validity(welded, labels, sign);
+    v["file"] = argv[2];
+    v["diagonal"] = box_of(welded).diagonal();
+    return v;
+}
+
+json check_cover(int argc, char** argv) {
+    const Mesh input = read_input(argv[2], std::stod(option(argc, argv, "--fit", "0")));
+    std::vector<Triangle3> parts;
+    size_t count = 0;
+    for (int i = 3; i < argc; ++i) {
+        if (std::string(argv[i]) == "--fit") {
+            ++i;
+            continue;
+        }
+        const Mesh part = read_stl_as_stored(argv[i]);
+        const auto t = triangles_of(part, all_triangles(part));
+        parts.insert(parts.end(), t.begin(), t.end());
+        ++count;
+    }
+    const double diagonal = box_of(input).diagonal();
+    // Area samples for the mean (vertices would weight dense regions), all for the max.
+    const auto area = surface_samples(input, all_triangles(input), kSamples, false);
+    const auto with_vertices = surface_samples(input, all_triangles(input), kSamples, true);
+    const Distances mean = distances(area, parts), max = distances(with_vertices, parts);
+    return {{"parts", count},
+            {"diagonal", diagonal},
+            {"max", max.max},
+            {"mean", mean.mean},
+            {"max_ratio", max.max / diagonal},
+            {"mean_ratio", mean.mean / diagonal}};
+}
+
+json check_decomposition_file(const std::string& path) {
+    json out;
+    std::vector<double> areas;
+    testing::RegisterTest("corpus", "decomposition", nullptr, nullptr, __FILE__, __LINE__, [&]() -> testing::Test* {
+        struct Run : testing::Test {
+            std::string path;
+            std::vector<double>* areas;
+            void TestBody() override { *areas = fabvdb::test::check_decomposition(fabvdb::test::read_decomposition(path)); }
+        };
+        auto* run = new Run;
+        run->path = path;
+        run->areas = &areas;
+        return run;
+    });
+    // gtest prints its expectations' failures on stdout: send them to stderr.
+    testing::GTEST_FLAG(brief) = true;
+    std::fflush(stdout);
+    const int saved = dup(1);
+    dup2(2, 1);
+    const int failed = RUN_ALL_TESTS();
+    std::fflush(stdout);
+    dup2(saved, 1);
+    out["file"] = path;
+    out["valid"] = failed == 0;
+    out["parts"] = areas.size();
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 3) {
+        std::cerr << "usage: corpus_check solid|input|cover|decomposition FILE [options] (see the top of "
+                     "bench/corpus/corpus_check.cpp)\n";
+        return 1;
+    }
+    const std::string mode = argv[1];
+    try {
+        json out;
+        if (mode == "solid") out = check_solid(argc, argv);
+        else if (mode == "input") out = check_input(argc, argv);
+        else if (mode == "cover") out = check_cover(argc, argv);
+        else if (mode == "decomposition") {
+            int none = 1;
+            testing::InitGoogleTest(&none, argv);
+            out = check_decomposition_file(argv[2]);
+        } else {
+            std::cerr << "corpus_check: unknown mode " << mode << "\n";
+            return 1;
+        }
+        std::cout << out.dump() << "\n";
+        return 0;
+    } catch (const std::exception& e) {
+        std::cout << json{{"error", e.what()}}.dump() << "\n";
+        return 2;
+    }
+}

@@ -1,0 +1,497 @@
+#!/usr/bin/env python3
+# bench/corpus/run.py — runs every fabvdb command on the corpus meshes with one
+# fixed recipe, under a time and memory cap per run, checks every output with
+# the independent checker (corpus_check, built from bench/corpus/corpus_check.cpp)
+# and writes one table, model x command, as Markdown and JSON.
+# GPL-3.0-or-later. Recipe, selection rules and verdicts: bench/corpus/README.md.
+#
+#   python3 bench/corpus/run.py --fabvdb build/fabvdb --checker build/bench/corpus_check \
+#       --out corpus-out [--subset all|smallest20] [--jobs 2] [--time-cap 120] [--mem-cap 8G]
+#
+# Exits 0 when no run FAILs, 1 otherwise. Each model's record is kept in
+# OUT/runs/MODEL/record.json; the table is assembled from every record found,
+# so `--only MODEL` reruns one model and refreshes its row.
+import argparse
+import concurrent.futures
+import datetime
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+FIT_MM = 60.0
+WALL_MM = 2.0
+COMMANDS = ["info", "repair", "hollow", "drain", "powder-sim", "decompose", "mold"]
+MOLD_SHARE = {"cad": 12, "sculpture": 10, "scan": 6, "dirty": 7, "large": 3, "degenerate": 2}
+WALL_TOLERANCE = 0.9          # measured wall >= 90% of --wall
+MOLD_MAX_RATIO = 0.01         # input within 1% of the diagonal of the cast parts (max)
+MOLD_MEAN_RATIO = 0.001       # and 0.1% (area-weighted mean)
+KEPT_TOLERANCE = 1e-5         # x diagonal: a clean input "kept" by repair (float rounding only)
+
+
+def read_manifest(corpus):
+    rows = []
+    with open(os.path.join(corpus, "manifest.tsv")) as f:
+        header = f.readline().rstrip("\n").split("\t")
+        for line in f:
+            if line.strip():
+                row = dict(zip(header, line.rstrip("\n").split("\t")))
+                row["triangles"] = int(row["triangles"])
+                rows.append(row)
+    return rows
+
+
+def smallest(rows, count):
+    return sorted(rows, key=lambda r: (r["triangles"], r["file"]))[:count]
+
+
+def mold_selection(rows):
+    """Per category, MOLD_SHARE[c] meshes spread evenly over its triangle-count order."""
+    chosen = set()
+    for category, share in MOLD_SHARE.items():
+        members = sorted((r for r in rows if r["category"] == category), key=lambda r: (r["triangles"], r["file"]))
+        n = len(members)
+        for i in range(min(share, n)):
+            chosen.add(members[(i * n) // share if share <= n else i]["file"])
+    return chosen
+
+
+class Runner:
+    def __init__(self, args):
+        self.args = args
+
+    def run(self, argv, workdir, name):
+        """Runs one command under the caps; returns exit, seconds, peak MiB, stderr."""
+        timefile = os.path.join(workdir, name + ".time")
+        cmd = ["timeout", "-k", "5", str(self.args.time_cap), "/usr/bin/time", "-f", "%M", "-o", timefile,
+               "prlimit", "--as=" + str(self.args.mem_cap_bytes), "--"] + argv
+        start = time.monotonic()
+        p = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                           errors="replace")
+        seconds = time.monotonic() - start
+        peak = None
+        try:
+            with open(timefile) as f:
+                values = [l for l in f.read().split() if l.isdigit()]
+                peak = int(values[-1]) / 1024.0 if values else None
+        except OSError:
+            pass
+        stderr = p.stderr
+        # GNU time reports a signal as "Command terminated by signal N" in its file.
+        try:
+            with open(timefile) as f:
+                m = re.search(r"terminated by signal (\d+)", f.read())
+                if m:
+                    stderr += "\n[killed by signal %s]" % m.group(1)
+                    if p.returncode == 0:
+                        p.returncode = 128 + int(m.group(1))
+        except OSError:
+            pass
+        return {"exit": p.returncode, "seconds": round(seconds, 2),
+                "timed_out": p.returncode in (124, 137) and seconds >= self.args.time_cap, "peak_mib": None if peak is None else round(peak),
+                "stderr": stderr.strip()[-2000:], "command": " ".join(argv)}
+
+    def check(self, argv):
+        p = subprocess.run(["timeout", str(self.args.check_cap), self.args.checker] + argv, stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, text=True, errors="replace")
+        try:
+            out = json.loads(p.stdout.strip().splitlines()[-1])
+        except (ValueError, IndexError):
+            out = {"error": "checker exit %d: %s" % (p.returncode, p.stderr.strip()[-500:])}
+        if p.returncode == 124:
+            out = {"error": "checker timed out after %d s" % self.args.check_cap}
+        if p.returncode != 0 and "error" not in out:
+            out["error"] = "checker exit %d: %s" % (p.returncode, p.stderr.strip()[-800:])
+        return out
+
+
+def left_files(path):
+    folder, base = os.path.split(path)
+    if not os.path.isdir(folder):
+        return []
+    return [f for f in os.listdir(folder) if f == base or f.startswith(base + ".partial")]
+
+
+def judge_failure(run, input_path, output, input_facts, closed_input):
+    """Verdict of a non-zero exit: refused (clear message, no output) or FAIL."""
+    code, err = run["exit"], run["stderr"]
+    name = os.path.basename(input_path)
+    if run.get("timed_out"):
+        return "FAIL", "no result within the time cap (%.0f s)" % run["seconds"]
+    if code >= 128 or code < 0:
+        return "FAIL", "crashed (%s)" % (err.splitlines()[-1] if err else "exit %d" % code)
+    if output and left_files(output):
+        return "FAIL", "exit %d left an output file behind" % code
+    if code in (2, 3) and name in err:
+        if code == 2 and input_facts.get("valid"):
+            return "FAIL", "refused a clean closed solid: " + first_line(err)
+        if code == 2 and closed_input:
+            return "FAIL", "refused a closed input: " + first_line(err)
+        return "refused", first_line(err)
+    if code in (2, 3):
+        return "FAIL", "exit %d without naming the file: %s" % (code, first_line(err))
+    return "FAIL", "exit %d: %s" % (code, first_line(err))
+
+
+def first_line(text):
+    for line in text.splitlines():
+        if line.startswith("fabvdb"):
+            return line.strip()[:300]
+    return text.strip().splitlines()[0][:300] if text.strip() else ""
+
+
+def solid_verdict(check, what):
+    if "error" in check:
+        return "FAIL", "%s: checker could not read it: %s" % (what, check["error"])
+    if not check.get("valid"):
+        return "FAIL", "%s invalid: %s" % (what, "; ".join(check.get("defects", [])))
+    return None
+
+
+def fmt(x, digits=3):
+    return "%.*g" % (digits, x)
+
+
+def process_model(row, args, runner, with_mold):
+    name = row["file"]
+    src = os.path.join(args.corpus, name)
+    work = os.path.join(args.out, "runs", name)
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    fabvdb = os.path.abspath(args.fabvdb)
+    fit = ["--fit", "%gmm" % FIT_MM]
+    record = {"model": name, "category": row["category"], "triangles": row["triangles"],
+              "closed": row["closed"], "runs": {}}
+    facts = runner.check(["input", src, "--fit", str(FIT_MM)])
+    record["input_check"] = facts
+    closed_input = row["closed"] == "yes"
+
+    def cell(command, result, figure, run, **extra):
+        c = {"result": result, "figure": figure}
+        if run:
+            c.update({"seconds": run["seconds"], "peak_mib": run["peak_mib"], "exit": run["exit"],
+                      "command": run["command"]})
+            if run["exit"] != 0:
+                c["message"] = first_line(run["stderr"])
+        c.update(extra)
+        record["runs"][command] = c
+        return c
+
+    # info: on the file as it is (no --fit), so unit warnings can show.
+    r = runner.run([fabvdb, "info", src, "--report", "info.json"], work, "info")
+    if r["exit"] == 0:
+        try:
+            rep = json.load(open(os.path.join(work, "info.json")))
+            warn = [l for l in r["stderr"].splitlines() if "warn" in l.lower()]
+            if rep.get("triangles") != row["triangles"]:
+                cell("info", "FAIL", "%s triangles, manifest %d" % (rep.get("triangles"), row["triangles"]), r)
+            else:
+                cell("info", "ok", "%d tri, closed %s%s" % (rep["triangles"], rep.get("closed"),
+                                                           ", %d warning(s)" % len(warn) if warn else ""), r,
+                     warnings=warn)
+        except (OSError, ValueError) as e:
+            cell("info", "FAIL", "exit 0 but no readable report (%s)" % e, r)
+    else:
+        v, why = judge_failure(r, src, None, {}, False)
+        cell("info", v, why, r)
+
+    # repair
+    out = os.path.join(work, "repaired.stl")
+    r = runner.run([fabvdb, "repair", src] + fit + ["-o", out, "--report", "repair.json"], work, "repair")
+    if r["exit"] == 0:
+        chk = runner.check(["solid", out, "--reference", src, "--fit", str(FIT_MM)])
+        bad = solid_verdict(chk, "output")
+        if bad:
+            cell("repair", bad[0], bad[1], r, check=chk)
+        else:
+            rep = json.load(open(os.path.join(work, "repair.json")))
+            voxel = rep.get("voxel_size") or 0
+            h = max(chk["input_to_output"]["max"], chk["output_to_input"]["max"])
+            hv = h / voxel if voxel else float("nan")
+            fig = "Hausdorff %s voxel (%s mm), %d tri" % (fmt(hv), fmt(h), chk["triangles"])
+            if facts.get("valid"):
+                kept = h <= KEPT_TOLERANCE * chk["diagonal"] and chk["triangles"] == facts["triangles"]
+                if not kept:
+                    cell("repair", "FAIL", "clean solid not kept as it is (%s; input %d tri)" %
+                         (fig, facts["triangles"]), r, check=chk, hausdorff_voxels=hv)
+                else:
+                    cell("repair", "ok", "kept, " + fig, r, check=chk, hausdorff_voxels=hv)
+            else:
+                cell("repair", "ok", fig, r, check=chk, hausdorff_voxels=hv)
+    else:
+        v, why = judge_failure(r, src, out, facts, closed_input)
+        cell("repair", v, why, r)
+
+    # hollow
+    out = os.path.join(work, "hollow.stl")
+    r = runner.run([fabvdb, "hollow", src] + fit + ["--wall", "%gmm" % WALL_MM, "-o", out, "--report",
+                                                    "hollow.json"], work, "hollow")
+    if r["exit"] == 0:
+        chk = runner.check(["solid", out, "--reference", src, "--fit", str(FIT_MM), "--cavity-wall"])
+        bad = solid_verdict(chk, "output")
+        if bad:
+            cell("hollow", bad[0], bad[1], r, check=chk)
+        else:
+            rep = json.load(open(os.path.join(work, "hollow.json")))
+            cavities = chk.get("cavity_shells", 0)
+            reported = rep.get("cavity_count")
+            voxel = rep.get("voxel_size") or 0
+            outer = chk["input_to_output"]["max"]
+            fig = "%d cavities" % cavities
+            verdict, why = "ok", None
+            if reported is not None and reported != cavities:
+                verdict, why = "FAIL", "report says %s cavities, the file has %d" % (reported, cavities)
+            if cavities:
+                wall = chk["wall"]
+                fig += ", wall min %s / median %s mm" % (fmt(wall["min"]), fmt(wall["median"]))
+                if wall["min"] < WALL_TOLERANCE * WALL_MM:
+                    verdict, why = "FAIL", "wall %s mm < %s mm" % (fmt(wall["min"]), fmt(WALL_TOLERANCE * WALL_MM))
+            else:
+                fig += " (solid" + (", warned)" if "warn" in r["stderr"].lower() else ", no warning)")
+            fig += ", input to outer surface %s voxel" % fmt(outer / voxel if voxel else float("nan"))
+            if facts.get("valid") and voxel and outer > voxel:
+                verdict, why = "FAIL", "clean input's surface moved %s voxel" % fmt(outer / voxel)
+            cell("hollow", verdict, why + " (" + fig + ")" if why else fig, r, check=chk)
+    else:
+        v, why = judge_failure(r, src, out, facts, closed_input)
+        cell("hollow", v, why, r)
+
+    # drain, then powder-sim on what it wrote
+    out = os.path.join(work, "drained.stl")
+    r = runner.run([fabvdb, "drain", src] + fit + ["--wall", "%gmm" % WALL_MM, "--holes", "auto", "-o", out,
+                                                   "--report", "drain.json"], work, "drain")
+    drained = False
+    if r["exit"] == 0:
+        chk = runner.check(["solid", out])
+        bad = solid_verdict(chk, "output")
+        rep = json.load(open(os.path.join(work, "drain.json")))
+        holes = len(rep.get("holes", []))
+        predicted = rep.get("predicted_residual_fraction")
+        if bad:
+            cell("drain", bad[0], bad[1], r, check=chk)
+        else:
+            fig = "%d holes" % holes
+            if predicted is not None:
+                fig += ", predicted residual %s%%" % fmt(100 * predicted)
+            cell("drain", "ok", fig, r, check=chk)
+            drained = holes > 0
+        if not bad and not drained:
+            cell("powder-sim", "n/a", "no holes (no cavity)", None)
+    else:
+        v, why = judge_failure(r, src, out, facts, closed_input)
+        cell("drain", v, why, r)
+        cell("powder-sim", "n/a", "no drained part", None)
+    if drained:
+        r = runner.run([fabvdb, "powder-sim", out, "--holes", "drain.json", "--report", "sim.json"], work,
+                       "powder-sim")
+        if r["exit"] == 0:
+            try:
+                sim = json.load(open(os.path.join(work, "sim.json")))
+                cell("powder-sim", "ok", "residual %s%% (predicted %s%%)" %
+                     (fmt(100 * sim["residual_fraction"]), fmt(100 * (predicted or 0))), r,
+                     residual_fraction=sim["residual_fraction"], predicted_fraction=predicted)
+            except (OSError, ValueError, KeyError) as e:
+                cell("powder-sim", "FAIL", "exit 0 without a readable report (%s)" % e, r)
+        else:
+            v, why = judge_failure(r, out, None, {}, False)
+            cell("powder-sim", v, why, r)
+
+    if not with_mold:
+        return record
+
+    # decompose, then mold from that decomposition
+    dec = os.path.join(work, "decompose")
+    r = runner.run([fabvdb, "decompose", src] + fit + ["-o", dec, "--report", "decompose.json"], work, "decompose")
+    decomposed = False
+    if r["exit"] == 0:
+        chk = runner.check(["decomposition", os.path.join(dec, "decomposition.json")])
+        try:
+            doc = json.load(open(os.path.join(dec, "decomposition.json")))
+            parts, energy, gamma = len(doc["parts"]), doc["total_moldability_energy"], doc["gamma"]
+            fig = "%d parts, energy %s (gamma %s)" % (parts, fmt(energy), fmt(gamma))
+            if "error" in chk or not chk.get("valid"):
+                cell("decompose", "FAIL", "decomposition.json fails the checks (%s)" %
+                     chk.get("error", "see the checker's stderr"), r, check=chk)
+            elif energy > gamma:
+                cell("decompose", "FAIL", "over gamma: " + fig, r, check=chk)
+            else:
+                cell("decompose", "ok", fig, r, check=chk)
+            decomposed = True
+        except (OSError, ValueError, KeyError) as e:
+            cell("decompose", "FAIL", "exit 0 without a readable decomposition.json (%s)" % e, r)
+    else:
+        v, why = judge_failure(r, src, dec, facts, closed_input)
+        cell("decompose", v, why, r)
+    if not decomposed:
+        cell("mold", "n/a", "no decomposition", None)
+        return record
+    mold = os.path.join(work, "mold")
+    r = runner.run([fabvdb, "mold", src] + fit + ["--decomposition", os.path.join(dec, "decomposition.json"), "-o",
+                                                  mold, "--report", "mold.json"], work, "mold")
+    if r["exit"] != 0:
+        v, why = judge_failure(r, src, mold, facts, closed_input)
+        cell("mold", v, why, r)
+        return record
+    try:
+        rep = json.load(open(os.path.join(work, "mold.json")))
+        parts = rep["parts"]
+    except (OSError, ValueError, KeyError) as e:
+        cell("mold", "FAIL", "exit 0 without a readable report (%s)" % e, r)
+        return record
+    problems, part_files, checks = [], [], []
+    for part in parts:
+        d = part["parting_direction"]
+        f = os.path.join(mold, part["file"])
+        part_files.append(f)
+        chk = runner.check(["solid", f, "--direction", "%.17g,%.17g,%.17g" % tuple(d)])
+        checks.append(chk)
+        bad = solid_verdict(chk, part["file"])
+        if bad:
+            problems.append(bad[1])
+        elif chk["height_field"]["lines_over_two"] or chk["height_field"]["odd_lines"]:
+            problems.append("%s not a double height field along its direction: %d of %d lines cross it more than "
+                            "twice" % (part["file"], chk["height_field"]["lines_over_two"],
+                                       chk["height_field"]["lines"]))
+        for key in ("top_file", "bottom_file"):
+            piece = os.path.join(mold, part[key])
+            pchk = runner.check(["solid", piece])
+            checks.append(pchk)
+            bad = solid_verdict(pchk, part[key])
+            if bad:
+                problems.append(bad[1])
+    cover = runner.check(["cover", src, "--fit", str(FIT_MM)] + part_files)
+    if "error" in cover:
+        problems.append("faithfulness not measured: " + cover["error"])
+        fig = "%d parts" % len(parts)
+    else:
+        fig = "%d parts, input to parts max %s%% / mean %s%% of the diagonal" % (
+            len(parts), fmt(100 * cover["max_ratio"]), fmt(100 * cover["mean_ratio"]))
+        if cover["max_ratio"] > MOLD_MAX_RATIO or cover["mean_ratio"] > MOLD_MEAN_RATIO:
+            problems.append("not faithful: " + fig)
+    if problems:
+        cell("mold", "FAIL", "; ".join(problems[:4]) + (" (+%d more)" % (len(problems) - 4) if len(problems) > 4
+                                                          else ""), r, checks=checks, cover=cover)
+    else:
+        cell("mold", "ok", fig, r, checks=checks, cover=cover)
+    return record
+
+
+def write_tables(args, rows, selected):
+    records = []
+    for row in rows:
+        path = os.path.join(args.out, "runs", row["file"], "record.json")
+        if row["file"] in selected and os.path.exists(path):
+            records.append(json.load(open(path)))
+    summary = {c: {"ok": 0, "refused": 0, "FAIL": 0, "n/a": 0} for c in COMMANDS}
+    failures = []
+    for rec in records:
+        for c, cellv in rec["runs"].items():
+            summary[c][cellv["result"]] += 1
+            if cellv["result"] == "FAIL":
+                failures.append((rec["model"], c, cellv))
+    doc = {"generated": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+           "recipe": {"fit_mm": FIT_MM, "wall_mm": WALL_MM, "holes": "auto", "time_cap_s": args.time_cap,
+                      "mem_cap": args.mem_cap, "subset": args.subset},
+           "summary": summary, "models": records}
+    with open(os.path.join(args.out, "results.json"), "w") as f:
+        json.dump(doc, f, indent=1)
+    lines = ["# fabvdb corpus run", "",
+             "Generated %s by `python3 bench/corpus/run.py %s`. Recipe: `--fit %gmm`, wall %g mm, holes auto; caps "
+             "%d s and %s per run. Cells: result · key figure · seconds · peak MiB." %
+             (doc["generated"], args.argv_text, FIT_MM, WALL_MM, args.time_cap, args.mem_cap), "",
+             "| command | ok | refused | FAIL | n/a |", "|---|---:|---:|---:|---:|"]
+    for c in COMMANDS:
+        s = summary[c]
+        lines.append("| %s | %d | %d | %d | %d |" % (c, s["ok"], s["refused"], s["FAIL"], s["n/a"]))
+    lines += ["", "| model | category | triangles | " + " | ".join(COMMANDS) + " |",
+              "|---|---|---:|" + "---|" * len(COMMANDS)]
+    for rec in records:
+        cells = []
+        for c in COMMANDS:
+            v = rec["runs"].get(c)
+            if not v:
+                cells.append("")
+                continue
+            text = "**%s** %s" % (v["result"], v["figure"] or "")
+            if v.get("seconds") is not None:
+                text += " · %.1f s" % v["seconds"]
+            if v.get("peak_mib") is not None:
+                text += " · %d MiB" % v["peak_mib"]
+            cells.append(text.replace("|", "/").replace("\n", " "))
+        lines.append("| `%s` | %s | %d | %s |" % (rec["model"], rec["category"], rec["triangles"], " | ".join(cells)))
+    lines += ["", "## Failures", ""]
+    for model, c, v in failures:
+        lines.append("- `%s` %s: %s — `%s`" % (model, c, v["figure"], v.get("command", "")))
+    with open(os.path.join(args.out, "results.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return summary, failures
+
+
+def parse_size(text):
+    m = re.fullmatch(r"(\d+)([KMG]?)", text.strip().upper())
+    if not m:
+        raise argparse.ArgumentTypeError("size like 8G or 512M")
+    return int(m.group(1)) * {"": 1, "K": 1 << 10, "M": 1 << 20, "G": 1 << 30}[m.group(2)]
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    p = argparse.ArgumentParser(description="Run every fabvdb command on the corpus and check every output "
+                                "independently (bench/corpus/README.md).")
+    p.add_argument("--fabvdb", required=True, help="the fabvdb binary")
+    p.add_argument("--checker", required=True, help="the corpus_check binary (build/bench/corpus_check)")
+    p.add_argument("--corpus", default=os.path.normpath(os.path.join(here, "../../../shared/data/corpus")))
+    p.add_argument("--out", required=True, help="output folder (results.md, results.json, runs/)")
+    p.add_argument("--subset", choices=["all", "smallest20"], default="all",
+                   help="all: every mesh (decompose+mold on the 40 of the mold rule); smallest20: the 20 meshes "
+                   "with the fewest triangles, every command on each")
+    p.add_argument("--only", nargs="*", help="rerun just these models (their rows are refreshed)")
+    p.add_argument("--jobs", type=int, default=2, help="models run at once")
+    p.add_argument("--time-cap", type=int, default=120, help="seconds per command run")
+    p.add_argument("--mem-cap", default="8G", help="address-space cap per command run")
+    p.add_argument("--check-cap", type=int, default=600, help="seconds per checker run")
+    p.add_argument("--tables-only", action="store_true",
+                   help="run nothing: write the tables from the records already in OUT/runs")
+    args = p.parse_args()
+    args.mem_cap_bytes = parse_size(args.mem_cap)
+    args.argv_text = " ".join(sys.argv[1:])
+    args.checker = os.path.abspath(args.checker)
+    os.makedirs(os.path.join(args.out, "runs"), exist_ok=True)
+    rows = read_manifest(args.corpus)
+    if args.subset == "smallest20":
+        selected_rows = smallest(rows, 20)
+        mold_set = {r["file"] for r in selected_rows}
+    else:
+        selected_rows = rows
+        mold_set = mold_selection(rows)
+    selected = {r["file"] for r in selected_rows}
+    # Smallest first, so an interrupted run has covered the most models.
+    todo = sorted((r for r in selected_rows if not args.only or r["file"] in args.only),
+                  key=lambda r: (r["triangles"], r["file"]))
+    runner = Runner(args)
+
+    def one(row):
+        rec = process_model(row, args, runner, row["file"] in mold_set)
+        with open(os.path.join(args.out, "runs", row["file"], "record.json"), "w") as f:
+            json.dump(rec, f, indent=1)
+        bad = [c for c, v in rec["runs"].items() if v["result"] == "FAIL"]
+        print("%-40s %s" % (row["file"], " ".join("%s:%s" % (c, v["result"]) for c, v in rec["runs"].items())),
+              flush=True)
+        return bad
+
+    if not args.tables_only:
+        with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            list(pool.map(one, todo))
+    summary, failures = write_tables(args, rows, selected)
+    for c in COMMANDS:
+        s = summary[c]
+        print("%-11s ok %3d  refused %3d  FAIL %3d  n/a %3d" % (c, s["ok"], s["refused"], s["FAIL"], s["n/a"]))
+    print("tables: %s, %s" % (os.path.join(args.out, "results.md"), os.path.join(args.out, "results.json")))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
