@@ -160,8 +160,18 @@ static void clear_progress_line(void) {
 
 int cli_fail(const cli_run* run, fabvdb_status status) {
     clear_progress_line();
-    fprintf(stderr, "fabvdb %s: %s: %s\n", run->command->name, fabvdb_status_string(status),
-            fabvdb_last_error(run->ctx));
+    const char* message = fabvdb_last_error(run->ctx);
+    /* The library calls a mesh it was handed by a generic name, not by its
+       file: put the input file's path in its place. */
+    static const char* const generic[] = {"mesh: ", "input: ", "part: ", "volume: "};
+    const char* input = run->positional_count > 0 ? run->positional[0] : NULL;
+    for (size_t i = 0; input && i < sizeof(generic) / sizeof(generic[0]); ++i)
+        if (strncmp(message, generic[i], strlen(generic[i])) == 0) {
+            fprintf(stderr, "fabvdb %s: %s: %s: %s\n", run->command->name, fabvdb_status_string(status), input,
+                    message + strlen(generic[i]));
+            return cli_exit_code(status);
+        }
+    fprintf(stderr, "fabvdb %s: %s: %s\n", run->command->name, fabvdb_status_string(status), message);
     return cli_exit_code(status);
 }
 
