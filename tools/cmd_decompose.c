@@ -70,12 +70,14 @@ static int run_decompose(cli_run* run) {
                                                  output->text, &report);
     fabvdb_mesh_free(mesh);
     if (status != FABVDB_OK) return cli_fail(run, status);
-    double count = 0, energy = 0, under = 0;
+    double count = 0, energy = 0, under = 0, solid_chosen = 0;
     fabvdb_report_number(run->ctx, report, "/part_count", &count);
     fabvdb_report_number(run->ctx, report, "/total_moldability_energy", &energy);
     fabvdb_report_number(run->ctx, report, "/under_gamma", &under);
-    printf("%.0f parts, total moldability energy %.5f (gamma %g)%s\n", count, energy, options.gamma,
-           under != 0 ? "" : "  WARNING: over gamma");
+    fabvdb_report_number(run->ctx, report, "/solid_chosen", &solid_chosen);
+    printf("%.0f parts, total moldability energy %.5f (gamma %g)%s%s\n", count, energy, options.gamma,
+           under != 0 ? "" : "  WARNING: over gamma",
+           solid_chosen != 0 ? "  NOTE: thinner than twice the shell everywhere, parts cast solid (as --solid)" : "");
     cli_note(run, "wrote %s", output->text);
     code = cli_write_report(run, report);
     fabvdb_report_free(report);
@@ -87,7 +89,8 @@ const cli_command cmd_decompose = {
     "cut a free-form object into parts that each cast in a two-piece mold (parting lines, edits)",
     "INPUT -o OUTDIR [--shell LEN] [--solid] [--gamma G] [--parts auto|N] [--draft ANGLE] [--smoothing N] "
     "[--edits EDITS.json] [--report R.json]",
-    "Decomposes the thin shell of INPUT (thickness --shell; thin features stay solid) into as few parts as\n"
+    "Decomposes the thin shell of INPUT (thickness --shell; thin features stay solid, and a part thin\n"
+    "everywhere is decomposed solid, as with --solid) into as few parts as\n"
     "possible, each moldable in a two-piece rigid mold, by the method of chapter 3 of the thesis 'Fabrication-aware geometry optimization':\n"
     "a low-resolution surface and prisms from the robust level set, region growing over the 162 candidate\n"
     "parting directions, a graph-cut parting line per part made of one top and one bottom patch. Parts are\n"

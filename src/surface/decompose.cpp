@@ -1,8 +1,9 @@
-//! decompose_mesh: shell_from_mesh → compute_moldability_terms →
-//! coarse_decomposition → smooth_boundaries → edits, timing each stage for
-//! the report.
+//! decompose_mesh: shell_from_mesh (again solid when the whole shell is one
+//! thin feature) → compute_moldability_terms → coarse_decomposition →
+//! smooth_boundaries → edits, timing each stage for the report.
 #include "surface/decompose.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "surface/boundary_smoothing.h"
@@ -22,6 +23,16 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
     };
     nlohmann::json low_res;
     result.shell = shell_from_mesh(input, settings.shell, progress, &low_res);
+    // A shell that is a thin feature everywhere would be one no-cut region, a
+    // single part however far over gamma: cast it solid instead, so it can be cut.
+    const bool all_thin =
+        !settings.shell.solid &&
+        std::all_of(result.shell.thin_segment.begin(), result.shell.thin_segment.end(), [](int s) { return s >= 0; });
+    if (all_thin) {
+        volume::LowResShellOptions solid = settings.shell;
+        solid.solid = true;
+        result.shell = shell_from_mesh(input, solid, progress, &low_res);
+    }
     lap("precompute_shell");
     result.terms = compute_moldability_terms(result.shell, settings.draft_radians, progress);
     lap("precompute_directions");
@@ -52,6 +63,8 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
     const double energy = d.total_energy();
     report["gamma"] = settings.decomposition.gamma;
     report["shell_thickness"] = result.shell.thickness;
+    report["solid"] = settings.shell.solid || all_thin;
+    report["solid_chosen"] = all_thin;
     report["unit_scale"] = result.shell.unit_scale;
     report["low_res"] = low_res;
     report["overlap_pairs"] = result.terms.pair_count;
@@ -69,6 +82,9 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
                                    {"area", area / (result.shell.unit_scale * result.shell.unit_scale)}});
     }
     report["warnings"] = nlohmann::json::array();
+    if (all_thin)
+        report["warnings"].push_back("the part is thinner than twice the shell thickness everywhere (one thin "
+                                     "feature): its parts are cast solid, as with --solid");
     if (!(energy < settings.decomposition.gamma))
         report["warnings"].push_back("the total moldability energy " + std::to_string(energy) +
                                      " is not under gamma " + std::to_string(settings.decomposition.gamma));
