@@ -157,10 +157,10 @@ FABVDB_API void fabvdb_mesh_free(fabvdb_mesh* mesh);
  * FABVDB_ERR_BAD_INPUT (unknown extension, malformed content: the message names
  * the file and the defect) or FABVDB_ERR_CANCELLED. Reports progress. */
 FABVDB_API fabvdb_status fabvdb_mesh_read(fabvdb_ctx* ctx, const char* path, fabvdb_mesh** out);
-/* Writes a mesh; the format comes from the extension (.stl is binary; .ply is
- * binary little-endian; .obj, .off, .3mf). Written to a temporary file in the
- * same folder and renamed, so a failure leaves no partial file.
- * Returns FABVDB_OK, FABVDB_ERR_IO, FABVDB_ERR_BAD_INPUT (unknown extension). */
+/* Writes a mesh (format from the extension: .stl binary, .ply binary little-endian, .obj, .off, .3mf) to a
+ * temporary file renamed when complete. A mesh fabvdb made as a solid (repair, hollow, drain, extraction) is
+ * first checked as stored (STL/3MF: floats): closed, 2-manifold, no degenerate or crossing triangle; else nothing
+ * is written. Returns FABVDB_OK, FABVDB_ERR_IO, FABVDB_ERR_BAD_INPUT (extension), FABVDB_ERR_INTERNAL (check). */
 FABVDB_API fabvdb_status fabvdb_mesh_write(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const char* path);
 
 /* Makes a copy of mesh scaled uniformly by factor about the origin (files
@@ -212,7 +212,7 @@ FABVDB_API void fabvdb_volume_free(fabvdb_volume* volume);
 
 /* fabvdb_volume_options.flags */
 #define FABVDB_REPAIR_NO_SNAP 0x1u /* keep extracted vertices where the voxels put them */
-
+#define FABVDB_REPAIR_VOLUMETRIC 0x2u /* fabvdb_mesh_repair: through the level set, never at mesh level */
 typedef struct fabvdb_volume_options {
     size_t struct_size;      /* sizeof(fabvdb_volume_options), set by _init() */
     double voxel_size;       /* voxel edge in mm; 0 (default): from resolution */
@@ -237,8 +237,8 @@ FABVDB_API void fabvdb_volume_options_init(fabvdb_volume_options* options);
  * options: NULL for the defaults. out: receives the volume, owned by the caller
  * (fabvdb_volume_free). report: NULL, or receives a report owned by the caller
  * with voxel_size, active_voxels, estimated_bytes, rebuilt (the band was
- * rebuilt from the winding-number surface), thickened, volume (mm^3),
- * shells_kept, shells_dropped, timings {stage: seconds}.
+ * rebuilt from the winding-number surface), thickened, enclosed_share, volume
+ * (mm^3), shells_kept, shells_dropped, timings {stage: seconds}.
  * Before allocating, the memory is estimated; over the context's budget the
  * call fails with FABVDB_ERR_OUT_OF_BUDGET and a message proposing a voxel size
  * that fits. Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT,
@@ -258,14 +258,14 @@ FABVDB_API fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_m
 FABVDB_API fabvdb_status fabvdb_volume_to_mesh(fabvdb_ctx* ctx, const fabvdb_volume* volume,
                                                const fabvdb_volume_options* options, fabvdb_mesh** out);
 
-/* Repairs a mesh in one call: fabvdb_volume_from_mesh, then the extraction,
- * then (unless FABVDB_REPAIR_NO_SNAP) output vertices within a voxel of a clean
- * part of the input are moved onto it, never creating a flipped triangle or
- * a self-intersection. out: receives the repaired mesh, owned by the caller.
- * report: NULL, or receives a report owned by the caller with the keys of
- * fabvdb_volume_from_mesh plus input (the fabvdb_mesh_inspect report of the
- * input), output_triangles, snapped_vertices; volume is the output mesh's.
- * Returns the statuses of fabvdb_volume_from_mesh. Reports progress. (since 0.1) */
+/* Repairs a mesh, changing no more than it must: a clean solid comes back as it is; exactly fixable defects
+ * (unwelded points, degenerate/duplicate triangles, flipped shells, small holes: faired, crossing shells: union)
+ * are fixed at mesh level, keeping the input's triangles. Else (or FABVDB_REPAIR_VOLUMETRIC, thicken, a minimum
+ * shell volume): fabvdb_volume_from_mesh, the extraction, then (unless FABVDB_REPAIR_NO_SNAP) vertices within a
+ * voxel of a clean part of the input moved onto it, never flipping or crossing a triangle. out: the repaired mesh,
+ * owned by the caller; shells that fail alone go volumetric and are united. report: NULL, or receives (owned by
+ * the caller) path (input/mesh/mixed/volumetric), mesh_level, input (fabvdb_mesh_inspect of it), output_triangles,
+ * volume, shells_kept/dropped, timings; fixes, shell_paths at mesh level; else fabvdb_volume_from_mesh's keys. */
 FABVDB_API fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
                                             const fabvdb_volume_options* options, fabvdb_mesh** out,
                                             fabvdb_report** report);
@@ -319,8 +319,8 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  * few crossing triangles (overlapping shells, a fold), cut down to the exact
  * boundary of its shells' union. The cavity vertices lie at exactly the wall
  * distance from the outer surface (closing 0) or at least at it (closing > 0).
- * Regions thinner than 2*wall stay solid.
- * mesh: borrowed. opts: NULL for the defaults.
+ * Regions thinner than 2*wall stay solid; a part that thin everywhere comes back
+ * solid, cavity_count 0, with a warning. mesh: borrowed. opts: NULL: defaults.
  * out_mesh: receives the hollowed mesh (owned by the caller): outer shells
  *   facing out, cavity shells facing in, every shell closed, no cavity
  *   triangle touching the outer surface (checked exactly).
@@ -329,12 +329,12 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  *   "repaired"),
  *   volume_solid, volume_shell, material_saved_fraction, cavity_count,
  *   cavities [{volume}], filled_cavities [{volume}], min_wall_at_vertices,
- *   output_vertices, output_triangles, timings {stage: seconds, total}.
+ *   output_vertices, output_triangles, timings {stage: seconds, total}, warnings.
  *   With infill: infill {pattern, cell, strut}; the cavity vertices are then
  *   at least (not exactly) the wall from the outer surface.
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle, wall <= 0,
- * closing < 0, voxel larger than the wall, adaptivity outside [0, 1], a wall
- * that leaves no cavity because the part is nowhere thicker than 2*wall,
+ * closing < 0, voxel larger than the wall, adaptivity outside [0, 1],
+ * a negative min_cavity_volume,
  * infill_cell < 0, an infill strut <= 0 or over infill_cell / 4);
  * FABVDB_ERR_BAD_INPUT (a mesh that encloses no volume); FABVDB_ERR_OUT_OF_BUDGET
  * (the voxel size needs more memory than the context's budget; the message
@@ -411,14 +411,14 @@ FABVDB_API void fabvdb_drain_options_init(fabvdb_drain_options* options);
  * (baseline_holes[], baseline_residual_fraction, baseline_residual_mm3,
  * baseline_routine_residual_fraction under its own routine); heatmap (with a
  * heat-map path: the files, their ranges and the share that drains averaged
- * by powder); cavity_volume_mm3, cavities, patches, candidates,
- * input_was_hollow, voxel_size and timings (seconds per stage).
+ * by powder); cavity_volume_mm3, cavities (= cavity_count), patches, candidates,
+ * input_was_hollow, voxel_size, timings, warnings. No cavity: no holes, solid out.
  * mesh: borrowed. options: borrowed; NULL means the defaults.
  * out_mesh: receives the drilled part (owned by the caller). out_report:
  * receives the report (owned by the caller); may be NULL if not wanted.
  * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (NULL ctx/mesh/out_mesh, an
  * option out of range, struct_size too small), FABVDB_ERR_BAD_INPUT (no
- * cavity; no site where a hole passes cleanly through the wall; a malformed
+ * site where a hole passes cleanly through the wall; a malformed
  * keep-out file), FABVDB_ERR_IO (keep-out or heat-map file), FABVDB_ERR_OUT_OF_BUDGET,
  * FABVDB_ERR_OUT_OF_MEMORY, FABVDB_ERR_CANCELLED or FABVDB_ERR_INTERNAL; on
  * failure no output is made and no heat-map file is left. Reports progress.

@@ -234,6 +234,31 @@ int cli_write_report(const cli_run* run, const fabvdb_report* report) {
     return CLI_EXIT_OK;
 }
 
+void cli_print_warnings(const cli_run* run, const fabvdb_report* report) {
+    /* The top-level key of the pretty-printed JSON (two spaces in), then its
+     * strings, unescaped (\uXXXX is left as written: warnings are ASCII). */
+    const char* text = report ? fabvdb_report_json(report) : NULL;
+    const char* at = text ? strstr(text, "\n  \"warnings\": [") : NULL;
+    if (!at) return;
+    at += strlen("\n  \"warnings\": [");
+    for (;;) {
+        while (*at == ' ' || *at == '\n' || *at == ',') ++at;
+        if (*at != '"') return;
+        clear_progress_line();
+        fprintf(stderr, "fabvdb %s: warning: ", run->command->name);
+        for (++at; *at && *at != '"'; ++at) {
+            if (*at == '\\' && at[1]) {
+                ++at;
+                fputc(*at == 'n' ? '\n' : *at == 't' ? '\t' : *at, stderr);
+            } else {
+                fputc(*at, stderr);
+            }
+        }
+        fputc('\n', stderr);
+        if (*at) ++at;
+    }
+}
+
 int cli_read_input(const cli_run* run, const char* path, fabvdb_mesh** out) {
     fabvdb_mesh* mesh = NULL;
     fabvdb_status status = fabvdb_mesh_read(run->ctx, path, &mesh);

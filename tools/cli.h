@@ -103,6 +103,11 @@ double cli_mesh_diagonal(const fabvdb_mesh* mesh);
  * error. The caller still owns (and frees) the report. */
 int cli_write_report(const cli_run* run, const fabvdb_report* report);
 
+/* Prints each text of the report's "warnings" array on stderr, even with
+ * --quiet: "fabvdb <command>: warning: <text>". A report without one prints
+ * nothing. */
+void cli_print_warnings(const cli_run* run, const fabvdb_report* report);
+
 /* Whether an output path names a level set (ends in .vdb, any case) rather
  * than a mesh. */
 int cli_is_level_set_path(const char* path);

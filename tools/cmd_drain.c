@@ -136,9 +136,11 @@ static int run_drain(cli_run* run) {
     if (status != FABVDB_OK) return cli_fail(run, status);
     status = fabvdb_mesh_write(run->ctx, drilled, output->text);
     fabvdb_mesh_free(drilled);
+    double cavities = 0;
+    fabvdb_report_number(run->ctx, report, "/cavity_count", &cavities);
     if (status == FABVDB_OK) {
         cli_note(run, "wrote %s", output->text);
-        if (drain.heatmap_path)
+        if (drain.heatmap_path && cavities > 0)
             cli_note(run, "wrote %s, the powder-left map and their legends beside it", drain.heatmap_path);
     }
     if (status != FABVDB_OK) {
@@ -159,9 +161,14 @@ static int run_drain(cli_run* run) {
         snprintf(pointer, sizeof pointer, "/holes/%d/diameter", (int)holes_count);
         if (fabvdb_report_number(run->ctx, report, pointer, &x) != FABVDB_OK) break;
     }
-    printf("%.0f drain holes; predicted powder left inside: %.2f%% (lowest-point holes: %.2f%%)\n", holes_count,
-           100.0 * predicted, 100.0 * baseline);
-    print_routine(run, report);
+    cli_print_warnings(run, report);
+    if (cavities > 0) {
+        printf("%.0f drain holes; predicted powder left inside: %.2f%% (lowest-point holes: %.2f%%)\n", holes_count,
+               100.0 * predicted, 100.0 * baseline);
+        print_routine(run, report);
+    } else {
+        printf("no cavity: no drain holes needed; the part is written solid\n");
+    }
     fabvdb_report_free(report);
     return CLI_EXIT_OK;
 }
@@ -178,5 +185,7 @@ const cli_command cmd_drain = {
     "diameter apart and stay out of --keep-out regions; every cavity gets its own. The holes are never\n"
     "predicted to leave more than as many holes at the lowest points of the part as printed (-z down).\n"
     "Prints the cleaning routine for the holes: the turns, in words, that drain the most (replay it with\n"
-    "`fabvdb powder-sim --routine`), with the powder predicted to stay under it and under random turns.",
+    "`fabvdb powder-sim --routine`), with the powder predicted to stay under it and under random turns.\n"
+    "A part with no cavity (nowhere thicker than twice the wall) needs no holes: it is written solid and\n"
+    "undrilled, with a warning, and exit 0.",
     options, sizeof(options) / sizeof(options[0]), 1, 1, run_drain};

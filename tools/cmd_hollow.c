@@ -96,6 +96,7 @@ static int run_hollow(cli_run* run) {
     fabvdb_report_number(run->ctx, report, "/voxel_size", &voxel);
     cli_note(run, "solid %.1f mm^3, shell %.1f mm^3, %.1f%% material saved, %.0f cavities (voxel %.3g mm)", solid,
              shell_volume, 100.0 * saved, cavities, voxel);
+    cli_print_warnings(run, report);
 
     code = cli_write_report(run, report);
     fabvdb_report_free(report);
@@ -118,6 +119,6 @@ const cli_command cmd_hollow = {
     "--infill gyroid adds struts of diameter --strut along the skeleton of one gyroid labyrinth (the\n"
     "srs net, 12 struts per cubic cell of side --cell), unioned with the shell: every strut is joined\n"
     "to the wall and the void around them stays one open-cell region, so powder and resin drain.\n"
-    "Exit 1 for a bad parameter (wall <= 0, a wall thicker than half the part), 3 when the voxel\n"
-    "size needs more memory than --max-memory.",
+    "A part nowhere thicker than twice the wall comes back solid, with a warning and cavity_count 0.\n"
+    "Exit 1 for a bad parameter (wall <= 0), 3 when the voxel size needs more memory than --max-memory.",
     options, sizeof(options) / sizeof(options[0]), 1, 1, run_hollow};

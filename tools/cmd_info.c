@@ -56,6 +56,7 @@ static int run_info(cli_run* run) {
     print_count(run, report, "duplicate triangles", "/duplicate_triangles");
     print_count(run, report, "self-intersecting pairs", "/self_intersecting_pairs");
     print_count(run, report, "unreferenced vertices", "/unreferenced_vertices");
+    cli_print_warnings(run, report);
 
     code = cli_write_report(run, report);
     fabvdb_report_free(report);

@@ -29,6 +29,11 @@ struct fabvdb_ctx {
 
 struct fabvdb_mesh {
     fabvdb::Mesh mesh;
+    //! Made by fabvdb as the boundary of a solid (repair, hollow, drain,
+    //! extraction): fabvdb_mesh_write checks it as written (write_solid_mesh.h).
+    bool solid = false;
+    //! What messages call it: the file it was read from, else "mesh".
+    std::string name = "mesh";
     std::vector<double> flat_vertices;
     std::vector<uint32_t> flat_triangles;
     //! Fills the flat arrays the accessors hand out.
@@ -42,8 +47,9 @@ struct fabvdb_report {
 
 namespace fabvdb::api {
 
-//! Wraps a finished mesh in a new handle (flattened for the accessors).
-fabvdb_mesh* new_mesh_handle(Mesh mesh);
+//! Wraps a finished mesh in a new handle (flattened for the accessors);
+//! `solid`: fabvdb made it as the boundary of a solid (see fabvdb_mesh).
+fabvdb_mesh* new_mesh_handle(Mesh mesh, bool solid = false);
 //! Wraps a finished JSON document in a new report handle.
 fabvdb_report* new_report_handle(nlohmann::json document);
 

@@ -233,6 +233,7 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         fabvdb::Progress progress = ctx->make_progress();
         fabvdb::powder::DrainPartOptions part_options;
         part_options.wall = o.wall;
+        part_options.input_name = mesh->name;
         part_options.voxel_size = o.voxel_size;
         part_options.memory_budget_bytes = ctx->budget_bytes();
         part_options.plan.hole_diameter = o.hole_diameter;
@@ -247,6 +248,24 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
             part_options.plan.keep_out = fabvdb::powder::read_keep_out(
                 o.keep_out_path, o.voxel_size > 0 ? o.voxel_size : o.wall / 4.0, progress);
         fabvdb::powder::DrainPartResult result = fabvdb::powder::drain_part(mesh->mesh, part_options, progress);
+        if (!result.has_cavity) {
+            nlohmann::json report = {{"holes", nlohmann::json::array()},
+                                     {"predicted_residual_fraction", 0.0},
+                                     {"predicted_residual_mm3", 0.0},
+                                     {"baseline_holes", nlohmann::json::array()},
+                                     {"baseline_residual_fraction", 0.0},
+                                     {"baseline_residual_mm3", 0.0},
+                                     {"cavity_volume_mm3", 0.0},
+                                     {"cavities", 0},
+                                     {"cavity_count", 0},
+                                     {"input_was_hollow", result.input_was_hollow},
+                                     {"voxel_size", result.voxel_size},
+                                     {"timings", result.timings},
+                                     {"warnings", result.warnings}};
+            if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(report));
+            *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
+            return;
+        }
         const auto& plan = result.plan;
         nlohmann::json heatmap;
         if (o.heatmap_path) {
@@ -269,6 +288,8 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         report["baseline_residual_mm3"] = plan.baseline_evaluation.residual_volume;
         report["cavity_volume_mm3"] = plan.evaluation.total_volume;
         report["cavities"] = plan.patches.cavity_count;
+        report["cavity_count"] = plan.patches.cavity_count;
+        report["warnings"] = result.warnings;
         report["residual_per_cavity_mm3"] = plan.evaluation.residual_per_cavity;
         report["patches"] = plan.patches.size();
         report["candidates"] = plan.candidate_count;
@@ -283,7 +304,7 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         for (const auto& [name, seconds] : result.timings) total += seconds;
         report["timings"]["total"] = total;
         fabvdb_report* report_handle = out_report ? fabvdb::api::new_report_handle(std::move(report)) : nullptr;
-        *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled));
+        *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
         if (out_report) *out_report = report_handle;
     });
 }

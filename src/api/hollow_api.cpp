@@ -66,6 +66,7 @@ nlohmann::json report_of(const HollowResult& result, const HollowOptions& option
     report["output_triangles"] = result.mesh.triangles.size();
     report["timings"] = result.timings;
     report["timings"]["total"] = seconds;
+    report["warnings"] = result.warnings;
     return report;
 }
 
@@ -103,11 +104,12 @@ fabvdb_status fabvdb_mesh_hollow(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out_mesh, "out_mesh");
-        const HollowOptions options = core_options(opts, mesh->mesh, ctx);
+        HollowOptions options = core_options(opts, mesh->mesh, ctx);
+        options.input_name = mesh->name;
         fabvdb::Progress progress = ctx->make_progress();
         nlohmann::json report;
         HollowResult result = run_hollow(mesh->mesh, options, progress, out_report ? &report : nullptr);
-        fabvdb_mesh* handle = fabvdb::api::new_mesh_handle(std::move(result.mesh));
+        fabvdb_mesh* handle = fabvdb::api::new_mesh_handle(std::move(result.mesh), true);
         if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(report));
         *out_mesh = handle;
     });

@@ -5,6 +5,7 @@
 #include "api/guard.h"
 #include "io/mesh_io.h"
 #include "surface/inspect.h"
+#include "surface/write_solid_mesh.h"
 
 void fabvdb_mesh::flatten() {
     flat_vertices.resize(mesh.vertices.size() * 3);
@@ -17,9 +18,10 @@ void fabvdb_mesh::flatten() {
 
 namespace fabvdb::api {
 
-fabvdb_mesh* new_mesh_handle(Mesh mesh) {
+fabvdb_mesh* new_mesh_handle(Mesh mesh, bool solid) {
     auto* handle = new fabvdb_mesh();
     handle->mesh = std::move(mesh);
+    handle->solid = solid;
     handle->flatten();
     return handle;
 }
@@ -53,7 +55,9 @@ fabvdb_status fabvdb_mesh_read(fabvdb_ctx* ctx, const char* path, fabvdb_mesh** 
         fabvdb::api::require(path, "path");
         fabvdb::api::require(out, "out");
         fabvdb::Progress progress = ctx->make_progress();
-        *out = fabvdb::api::new_mesh_handle(fabvdb::io::read_mesh(path, progress));
+        fabvdb_mesh* handle = fabvdb::api::new_mesh_handle(fabvdb::io::read_mesh(path, progress));
+        handle->name = path;
+        *out = handle;
     });
 }
 
@@ -61,7 +65,13 @@ fabvdb_status fabvdb_mesh_write(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(path, "path");
-        fabvdb::io::write_mesh(mesh->mesh, path);
+        if (!mesh->solid) {
+            fabvdb::io::write_mesh(mesh->mesh, path);
+            return;
+        }
+        fabvdb::Progress progress = ctx->make_progress();
+        progress.stage("check output");
+        fabvdb::surface::write_solid_mesh(mesh->mesh, path, progress);
     });
 }
 
@@ -74,7 +84,8 @@ fabvdb_status fabvdb_mesh_scale(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, double
         fabvdb::Mesh scaled = mesh->mesh;
         for (fabvdb::Vec3& p : scaled.vertices)
             for (double& c : p) c *= factor;
-        *out = fabvdb::api::new_mesh_handle(std::move(scaled));
+        *out = fabvdb::api::new_mesh_handle(std::move(scaled), mesh->solid);
+        (*out)->name = mesh->name;
     });
 }
 

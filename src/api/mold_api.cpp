@@ -7,9 +7,9 @@
 
 #include "api/guard.h"
 #include "core/atomic_folder.h"
-#include "io/mesh_io.h"
 #include "surface/decomposition_parts.h"
 #include "surface/mold_generation.h"
+#include "surface/write_solid_mesh.h"
 
 namespace {
 
@@ -142,10 +142,13 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         for (size_t p = 0; p < result.parts.size(); ++p) {
             const fabvdb::surface::CastPart& part = result.parts[p];
             nlohmann::json entry = part_entry(part, result.diagonal, options.density, common);
-            fabvdb::io::write_mesh(part.part, (root / entry["file"].get<std::string>()).string());
+            const auto write = [&](const fabvdb::Mesh& piece, const char* key) {
+                fabvdb::surface::write_solid_mesh(piece, (root / entry[key].get<std::string>()).string(), progress);
+            };
+            write(part.part, "file");
             if (!common) {
-                fabvdb::io::write_mesh(part.mold.top, (root / entry["top_file"].get<std::string>()).string());
-                fabvdb::io::write_mesh(part.mold.bottom, (root / entry["bottom_file"].get<std::string>()).string());
+                write(part.mold.top, "top_file");
+                write(part.mold.bottom, "bottom_file");
             }
             report["parts"].push_back(std::move(entry));
             progress.update(double(p + 1) / double(result.parts.size()));
@@ -154,8 +157,10 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
             nlohmann::json entry = mold_entry(result.common_mold);
             entry["top_file"] = "molds/common_top.stl";
             entry["bottom_file"] = "molds/common_bottom.stl";
-            fabvdb::io::write_mesh(result.common_mold.top, (root / "molds/common_top.stl").string());
-            fabvdb::io::write_mesh(result.common_mold.bottom, (root / "molds/common_bottom.stl").string());
+            fabvdb::surface::write_solid_mesh(result.common_mold.top, (root / "molds/common_top.stl").string(),
+                                              progress);
+            fabvdb::surface::write_solid_mesh(result.common_mold.bottom, (root / "molds/common_bottom.stl").string(),
+                                              progress);
             report["common_mold"] = std::move(entry);
         }
         report["mean_distance_ratio"] = result.mean_distance / result.diagonal;

@@ -1,7 +1,10 @@
 //! C API: volume handles (level sets) — robust conversion from meshes
 //! (`fabvdb repair`), extraction, .vdb files.
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include <openvdb/io/File.h>
 #include <openvdb/tools/LevelSetMeasure.h>
@@ -10,7 +13,9 @@
 #include "api/volume_handle.h"
 #include "core/atomic_output.h"
 #include "surface/inspect.h"
+#include "surface/mesh_repair.h"
 #include "volume/extract_mesh.h"
+#include "volume/mesh_shells.h"
 #include "volume/repair.h"
 
 namespace {
@@ -53,6 +58,7 @@ nlohmann::json repair_report(const fabvdb::volume::RepairResult& result) {
     report["estimated_bytes"] = result.distance.estimated_bytes;
     report["rebuilt"] = result.distance.rebuilt;
     report["thickened"] = result.distance.thickened;
+    report["enclosed_share"] = result.distance.enclosed_share;
     report["shells_kept"] = result.shells_kept;
     report["shells_dropped"] = result.shells_dropped;
     report["timings"] = result.distance.timings;
@@ -85,6 +91,7 @@ fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, 
         fabvdb::api::require(out, "out");
         fabvdb_volume_options defaults;
         fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, options_or_defaults(options, defaults));
+        repair.distance.input_name = mesh->name;
         repair.extract = false;
         fabvdb::Progress progress = ctx->make_progress();
         fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
@@ -105,7 +112,8 @@ fabvdb_status fabvdb_volume_to_mesh(fabvdb_ctx* ctx, const fabvdb_volume* volume
         fabvdb_volume_options defaults;
         const fabvdb_volume_options& chosen = options_or_defaults(options, defaults);
         fabvdb::Progress progress = ctx->make_progress();
-        *out = fabvdb::api::new_mesh_handle(fabvdb::volume::extract_mesh(*volume->grid, chosen.adaptivity, progress));
+        *out = fabvdb::api::new_mesh_handle(fabvdb::volume::extract_mesh(*volume->grid, chosen.adaptivity, progress),
+                                            true);
     });
 }
 
@@ -115,19 +123,69 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out, "out");
         fabvdb_volume_options defaults;
-        const fabvdb::volume::RepairOptions repair =
-            repair_options(ctx, mesh->mesh, options_or_defaults(options, defaults));
+        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, options_or_defaults(options, defaults));
+        repair.distance.input_name = mesh->name;
+        const fabvdb_volume_options& chosen = options_or_defaults(options, defaults);
         fabvdb::Progress progress = ctx->make_progress();
         nlohmann::json input;
         if (report) input = fabvdb::surface::inspect_mesh(mesh->mesh, progress);
+        // Mesh level first, unless asked for voxels or what only voxels do
+        // (thicken a sheet, drop small shells).
+        const bool volumetric = (chosen.flags & FABVDB_REPAIR_VOLUMETRIC) || repair.distance.thicken > 0.0 ||
+                                repair.min_shell_volume > 0.0;
+        const auto start = std::chrono::steady_clock::now();
+        std::optional<fabvdb::surface::MeshRepair> fixed;
+        if (!volumetric) fixed = fabvdb::surface::repair_at_mesh_level(mesh->mesh, progress);
+        nlohmann::json rest_report;
+        if (fixed && !fixed->rest.triangles.empty()) {
+            // Some shells need voxels: those alone, then united with the others.
+            std::optional<fabvdb::Mesh> united;
+            try {
+                fabvdb::volume::RepairResult rest = fabvdb::volume::repair(fixed->rest, repair, progress);
+                rest_report = repair_report(rest);
+                united = fabvdb::surface::unite_shells(fixed->mesh, rest.mesh, fixed->fixes, progress);
+            } catch (const fabvdb::Error& e) {
+                if (e.status() != FABVDB_ERR_BAD_INPUT) throw;  // the rest alone encloses nothing
+            }
+            if (united) {
+                fixed->mesh = std::move(*united);
+                fixed->path = "mixed";
+            } else {
+                fixed.reset();
+            }
+        }
+        if (fixed) {
+            nlohmann::json document;
+            document["path"] = fixed->path;
+            document["mesh_level"] = true;
+            document["fixes"] = fixed->fixes;
+            document["fix_count"] = fixed->fixes.size();
+            document["shell_paths"] = fixed->shell_paths;
+            document["volumetric_shell_count"] =
+                std::count(fixed->shell_paths.begin(), fixed->shell_paths.end(), "volumetric");
+            document["voxel_size"] = rest_report.is_null() ? nlohmann::json() : rest_report["voxel_size"];
+            if (!rest_report.is_null()) document["volumetric_rest"] = std::move(rest_report);
+            document["shells_kept"] = fabvdb::volume::split_shells(fixed->mesh).size();
+            document["shells_dropped"] = 0;
+            document["input"] = std::move(input);
+            document["output_triangles"] = fixed->mesh.triangles.size();
+            document["volume"] = signed_volume(fixed->mesh);
+            document["timings"] = {
+                {"mesh level", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+            if (report) *report = fabvdb::api::new_report_handle(std::move(document));
+            *out = fabvdb::api::new_mesh_handle(std::move(fixed->mesh), true);
+            return;
+        }
         fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
         nlohmann::json document = repair_report(result);
+        document["path"] = "volumetric";
+        document["mesh_level"] = false;
         document["input"] = std::move(input);
         document["output_triangles"] = result.mesh.triangles.size();
         document["snapped_vertices"] = result.snapped_vertices;
         document["volume"] = signed_volume(result.mesh);
         if (report) *report = fabvdb::api::new_report_handle(std::move(document));
-        *out = fabvdb::api::new_mesh_handle(std::move(result.mesh));
+        *out = fabvdb::api::new_mesh_handle(std::move(result.mesh), true);
     });
 }
 

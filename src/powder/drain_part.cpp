@@ -89,14 +89,21 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         hollow.voxel_size = voxel;
         hollow.memory_budget_bytes = options.memory_budget_bytes;
         hollow.input_name = options.input_name;
-        shells_mesh = volume::hollow(input, hollow, progress).mesh;
+        volume::HollowResult hollowed = volume::hollow(input, hollow, progress);
+        shells_mesh = std::move(hollowed.mesh);
+        result.warnings = std::move(hollowed.warnings);
         lap("hollow");
     }
     progress.stage("level sets");
     const Shells shells = split_shells(shells_mesh);
-    if (shells.voids.triangles.empty())
-        throw Error(FABVDB_ERR_BAD_INPUT,
-                    options.input_name + ": the part has no cavity (thinner than twice the wall everywhere)");
+    if (shells.voids.triangles.empty()) {
+        result.warnings.push_back(options.input_name +
+                                  ": the part has no cavity, so no powder is trapped: no drain holes are needed and "
+                                  "the part is returned solid, undrilled");
+        result.drilled = std::move(shells_mesh);
+        return result;
+    }
+    result.has_cavity = true;
     const openvdb::FloatGrid::Ptr part = level_set_of(shells.outer, voxel);
     const openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
     result.shell = openvdb::tools::csgDifferenceCopy(*part, *cavity);

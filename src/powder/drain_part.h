@@ -3,12 +3,14 @@
 //! shell — it has inward-facing shells that bound a void — is used as is),
 //! the drain-hole plan (powder/drain_plan.h), the holes drilled through the
 //! shell in the level set (volume::drill_holes) and the drilled part
-//! extracted as the output mesh. Reports progress; cancellable; a cancelled
+//! extracted as the output mesh. A part too thin for a cavity needs no holes:
+//! it comes back solid, with a warning. Reports progress; cancellable; a cancelled
 //! or failed call returns nothing.
 #pragma once
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include <openvdb/openvdb.h>
 
@@ -27,7 +29,12 @@ struct DrainPartOptions {
 };
 
 struct DrainPartResult {
+    //! The drilled part; a part without a cavity (too thin for one under the
+    //! wall) comes back solid and undrilled, `has_cavity` false, with no
+    //! shell and an empty plan, and a warning says so.
     Mesh drilled;
+    bool has_cavity = false;
+    std::vector<std::string> warnings;
     bool input_was_hollow = false;
     double voxel_size = 0.0;
     openvdb::FloatGrid::Ptr shell;  //!< undrilled, negative in the wall

@@ -1,7 +1,14 @@
 //! Inspection for `fabvdb info`: gathers the topology summary (as stored and
 //! after welding), the degenerate, duplicate and self-intersecting triangles,
-//! the signed volumes and the bounding box into one JSON object.
+//! the signed volumes and the bounding box into one JSON object, with
+//! warnings when the size or place of the model suggests other units.
 #include "surface/inspect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "surface/degenerate_triangles.h"
 #include "surface/duplicate_triangles.h"
@@ -11,6 +18,41 @@
 #include "surface/weld_vertices.h"
 
 namespace fabvdb::surface {
+
+namespace {
+
+std::string millimetres(double value) {
+    std::ostringstream text;
+    text.precision(3);
+    text << value << " mm";
+    return text.str();
+}
+
+// What the size and place of the model suggest about its units: a part under
+// 1 mm or over 2 m across was most likely drawn in other units (metres,
+// inches, micrometres), and one far from the origin loses precision in STL.
+std::vector<std::string> unit_warnings(const BoundingBox& box) {
+    std::vector<std::string> warnings;
+    double longest = 0.0, farthest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        longest = std::max(longest, box.max[k] - box.min[k]);
+        farthest = std::max({farthest, std::abs(box.min[k]), std::abs(box.max[k])});
+    }
+    if (longest > 0.0 && longest < 1.0)
+        warnings.push_back("the model is only " + millimetres(longest) +
+                           " across: if its file is in metres, scale it by 1000 (--scale 1000); in inches, by 25.4");
+    else if (longest > 2000.0)
+        warnings.push_back("the model is " + millimetres(longest) +
+                           " across: if its file is in micrometres, scale it by 0.001 (--scale 0.001); check its units");
+    if (farthest > 1e6) {
+        const double step = std::nextafter(float(farthest), HUGE_VALF) - float(farthest);
+        warnings.push_back("the model lies " + millimetres(farthest) + " from the origin, where STL and 3MF store "
+                           "coordinates " + millimetres(step) + " apart; write .obj, .ply or .off to keep them");
+    }
+    return warnings;
+}
+
+}  // namespace
 
 nlohmann::json inspect_mesh(const Mesh& mesh, Progress& progress) {
     progress.stage("topology");
@@ -67,6 +109,7 @@ nlohmann::json inspect_mesh(const Mesh& mesh, Progress& progress) {
                         {"boundary_loops", welded_topology.boundary_loops},
                         {"non_manifold_edges", welded_topology.non_manifold_edges},
                         {"non_manifold_vertices", welded_topology.non_manifold_vertices}};
+    report["warnings"] = unit_warnings(box);
     return report;
 }
 

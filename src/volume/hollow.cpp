@@ -13,6 +13,7 @@
 #include <openvdb/tree/NodeManager.h>
 #include <tbb/enumerable_thread_specific.h>
 
+#include "core/centred_frame.h"
 #include "core/error.h"
 #include "volume/cavity_regions.h"
 #include "volume/clean_solid.h"
@@ -140,6 +141,12 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     validate(options);
     validate_mesh(input, options.input_name);
     if (input.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangles");
+    const CentredFrame frame = centred_frame(input);
+    if (!frame.identity()) {
+        HollowResult result = hollow(to_local(input, frame), options, progress);
+        to_world(result.mesh, frame);
+        return result;
+    }
     openvdb::initialize();
     HollowResult result;
     StageClock clock(result.timings);
@@ -185,12 +192,14 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     SolidDistance solid = solid_distance(outer, voxel, depth, progress);
     clock.lap("interior distance");
     const double thickest = deepest(*solid.distance);
-    if (thickest <= options.wall) {
+    if (thickest <= depth) {
         std::ostringstream message;
         message.precision(3);
-        message << options.input_name << ": wall " << options.wall
-                << " mm leaves no cavity: the part is nowhere thicker than " << 2.0 * thickest << " mm";
-        throw Error(FABVDB_ERR_INVALID_ARGUMENT, message.str());
+        message << options.input_name << ": wall " << options.wall << " mm";
+        if (opening > 0.0) message << " (and " << opening << " mm to open the cavity)";
+        message << " leaves no cavity: the part is nowhere thicker than " << 2.0 * thickest
+                << " mm; it is returned solid";
+        result.warnings.push_back(message.str());
     }
 
     // The cavity: the core at -(wall + opening), its distance rebuilt by fast

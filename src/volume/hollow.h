@@ -14,10 +14,12 @@
 //! triangles.
 //! Guarantees: outer shells face out, cavity shells face in, every shell is
 //! closed and no cavity triangle touches the outer surface (checked exactly);
-//! regions thinner than 2·(wall + opening) stay solid; voids under
+//! regions thinner than 2·(wall + opening) stay solid (a part thinner than
+//! that everywhere comes back solid, with a warning); voids under
 //! `min_cavity_volume` are filled. An optional gyroid strut infill is carved out of the cavity
 //! (see gyroid_infill.h) before extraction. Cancellable; the memory budget is
-//! checked before any grid is built.
+//! checked before any grid is built. A part far from the origin is hollowed
+//! near it (core/centred_frame.h).
 #pragma once
 
 #include <cstdint>
@@ -57,6 +59,9 @@ struct HollowResult {
     std::vector<double> filled_cavity_volumes;  //!< mm³ per void filled (under the minimum)
     double min_wall_at_vertices = 0.0;          //!< smallest cavity-vertex distance to the outer surface
     std::map<std::string, double> timings;      //!< seconds per stage
+    //! What the caller should tell the user: a part too thin for a cavity
+    //! anywhere comes back solid, with a warning saying so.
+    std::vector<std::string> warnings;
 };
 
 //! wall / 4, so the cavity's rounded concave parts (radius >= wall) are

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/centred_frame.h"
 #include "core/error.h"
 #include "volume/closed_manifold.h"
 #include "volume/crossing_pairs.h"
@@ -71,6 +72,13 @@ double voxel_size_for_resolution(const Mesh& mesh, int resolution, const std::st
 }
 
 RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& progress) {
+    const CentredFrame frame = centred_frame(mesh);
+    if (!frame.identity()) {
+        RepairResult result = repair(to_local(mesh, frame), options, progress);
+        to_world(result.mesh, frame);
+        result.grid->transform().postTranslate(openvdb::Vec3d(frame.offset[0], frame.offset[1], frame.offset[2]));
+        return result;
+    }
     RepairResult result;
     OrientedInput input;
     result.grid = signed_distance_from_mesh(mesh, options.distance, progress, &result.distance,

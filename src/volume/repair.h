@@ -5,7 +5,8 @@
 //! (specks of the extraction) are dropped. The output mesh is closed, 2-manifold,
 //! outward-oriented and free of self-intersections (checked with exact
 //! predicates; walls thinner than a voxel, whose two sides would touch, are
-//! grown by half a voxel until it is). Throws what its stages
+//! grown by half a voxel until it is). A model far from the origin is
+//! processed near it (core/centred_frame.h). Throws what its stages
 //! throw, and Error(BAD_INPUT) when no shell survives; cancellable.
 #pragma once
 

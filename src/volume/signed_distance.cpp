@@ -32,6 +32,7 @@
 
 #include "core/error.h"
 #include "volume/closed_cycle.h"
+#include "volume/enclosed_share.h"
 #include "volume/memory_estimate.h"
 #include "volume/orient_soup.h"
 #include "volume/progress_interrupter.h"
@@ -49,6 +50,10 @@ constexpr int leaf_size = int(FloatLeaf::SIZE);
 // is clearly inside (w >= 0.6, above the dipole approximation's error).
 constexpr double inside_threshold = 0.5;
 constexpr double clearly_inside = 0.6;
+// Under this share of its area enclosing volume (enclosed_share.h) an input
+// encloses nothing: soups, sheets and bowls measure under 0.05, scans with
+// holes over 0.5 (tests/volume/enclosed_share_test.cpp).
+constexpr double min_enclosed_share = 0.1;
 
 class StageClock {
 public:
@@ -372,23 +377,39 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
     if (mesh.triangles.empty())
         throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangle with a non-zero area");
 
-    const openvdb::Int32Grid::Ptr closest_triangle = oriented ? openvdb::Int32Grid::create(-1) : nullptr;
-    openvdb::FloatGrid::Ptr grid;
-    {
-        StageClock clock(stats, progress, "distance");
-        grid = unsigned_band(mesh, *transform, half_band, progress, closest_triangle.get());
-    }
-
     std::unique_ptr<WindingNumber> winding;
     {
         StageClock clock(stats, progress, "winding number tree");
         winding = std::make_unique<WindingNumber>(mesh);
     }
+    // What encloses nothing is told apart before any voxel is built.
+    double share = 0.0;
+    {
+        StageClock clock(stats, progress, "enclosed share");
+        share = enclosed_share(mesh, *winding);
+    }
+    stats.enclosed_share = share;
+    const bool encloses = share >= min_enclosed_share;
+    if (!encloses && options.thicken <= 0.0) {
+        std::ostringstream message;
+        message.precision(2);
+        message << options.input_name << ": encloses no volume (an open sheet, a single scan or a soup of "
+                << "unconnected triangles: the winding number reaches 0.9 beside only " << 100.0 * share
+                << "% of its surface); give a thickness (--thicken) to make it a solid sheet";
+        throw Error(FABVDB_ERR_BAD_INPUT, message.str());
+    }
+
+    const openvdb::Int32Grid::Ptr closest_triangle = oriented ? openvdb::Int32Grid::create(-1) : nullptr;
+    openvdb::FloatGrid::Ptr grid;
+    if (encloses) {
+        StageClock clock(stats, progress, "distance");
+        grid = unsigned_band(mesh, *transform, half_band, progress, closest_triangle.get());
+    }
 
     std::vector<float> band_winding;
     std::atomic<uint64_t> clearly_inside_voxels{0};
     const bool closed = is_closed_cycle(mesh);
-    {
+    if (encloses) {
         StageClock clock(stats, progress, "winding number");
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
         band_winding.assign(leaves.leafCount() * size_t(leaf_size), 0.0f);
@@ -412,9 +433,11 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
 
     if (clearly_inside_voxels == 0) {
         if (options.thicken <= 0.0)
-            throw Error(FABVDB_ERR_BAD_INPUT, options.input_name +
-                                                  ": encloses no volume (an open sheet); give a thickness "
-                                                  "(--thicken) to make it a solid sheet");
+            throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": encloses no volume at a voxel size of " +
+                                                  std::to_string(voxel) +
+                                                  " mm: no voxel lies inside it (walls thinner than a voxel); "
+                                                  "give a smaller voxel size, or a thickness (--thicken) to make "
+                                                  "it a solid sheet");
         StageClock clock(stats, progress, "thicken");
         const double half_thickness = 0.5 * options.thicken;
         grid = unsigned_band(mesh, *transform, float(std::ceil(half_thickness / voxel)) + half_band, progress,

@@ -45,6 +45,9 @@ struct SignedDistanceStats {
     bool rebuilt = false;
     //! true when the input enclosed no volume and was thickened.
     bool thickened = false;
+    //! Share of the input's area beside which the winding number reaches
+    //! 0.9 (enclosed_share.h): under 0.1 the input encloses no volume.
+    double enclosed_share = 0.0;
     //! Seconds per stage, by stage name.
     std::map<std::string, double> timings;
 };

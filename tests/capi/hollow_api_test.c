@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "check.h"
 #include "fabvdb.h"
@@ -93,12 +94,23 @@ int main(void) {
     CHECK(hollowed == NULL);
     options.infill_cell = 0.0;
 
+    /* A wall thicker than half the part: the part comes back solid, with
+     * cavity_count 0 and a warning. */
+    options.wall = 25;
+    fabvdb_report* thin = NULL;
+    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, &thin) == FABVDB_OK);
+    CHECK(hollowed != NULL && fabvdb_mesh_triangle_count(hollowed) == fabvdb_mesh_triangle_count(cube));
+    double cavities = -1;
+    CHECK(fabvdb_report_number(ctx, thin, "/cavity_count", &cavities) == FABVDB_OK && cavities == 0);
+    CHECK(strstr(fabvdb_report_json(thin), "leaves no cavity") != NULL);
+    fabvdb_report_free(thin);
+    fabvdb_mesh_free(hollowed);
+    options.wall = 3;
+
     /* Bad arguments leave the out-parameters untouched. */
     hollowed = NULL;
     CHECK(fabvdb_mesh_hollow(ctx, NULL, &options, &hollowed, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
     options.wall = 0;
-    CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
-    options.wall = 25;
     CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
     options.wall = 3;
     options.voxel_size = 0.001;

@@ -3,8 +3,9 @@
 # part is written, the report lists holes with the documented keys, the heat
 # maps are binary PLYs with colours and quality and PNG legends, the
 # simulation reads the report and replays its cleaning routine exactly;
-# --target takes a percentage; bad inputs give exit code 2 (bad
-# options 1) and leave no output.
+# --target takes a percentage; a part too thin for a cavity comes back solid
+# without holes; bad inputs give exit code 2 (bad options 1) and leave no
+# output.
 set -u
 fabvdb="$1"; data="$2"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
@@ -60,6 +61,17 @@ PY
 echo '{"routine": [{"gravity": [0, 0]}]}' > "$work/badroutine.json"
 "$fabvdb" powder-sim "$work/out2.stl" --holes "$work/r2.json" --routine "$work/badroutine.json" --quiet 2>/dev/null
 [ $? -eq 2 ] || fail "bad routine JSON: expected exit 2"
+
+# A part too thin for a cavity needs no holes: written solid, exit 0, a warning.
+"$fabvdb" drain "$data/meshes/sphere.obj" --fit 40mm -o "$work/solid.stl" --wall 25mm --heatmap "$work/none.ply" \
+    --report "$work/solid.json" 2>"$work/solid.err" >"$work/solid.out" || fail "drain of a thin part: exit $?"
+grep -q "warning: .*no cavity" "$work/solid.err" || fail "no warning for a part without cavity"
+grep -q '"cavity_count": 0' "$work/solid.json" || fail "cavity_count is not 0"
+grep -q '"holes": \[\]' "$work/solid.json" || fail "holes drilled in a part without cavity"
+[ ! -e "$work/none.ply" ] || fail "a heat map of no cavity"
+"$fabvdb" info "$work/solid.stl" --report "$work/solid-info.json" --quiet || fail "info of the solid part"
+grep -q '"closed": true' "$work/solid-info.json" || fail "the solid part is not closed"
+grep -q '"components": 1' "$work/solid-info.json" || fail "the solid part is not one shell"
 
 echo '{"holes": [{"center": [0, 0]}]}' > "$work/bad.json"
 "$fabvdb" powder-sim "$work/out.stl" --holes "$work/bad.json" --quiet 2>/dev/null

@@ -1,7 +1,8 @@
 # hollow_test.sh — `fabvdb hollow`: outputs checked by `fabvdb info` (closed,
 # no self-intersection, one outer and one cavity shell, volume equal to the
-# reported shell), reports with their keys, bad parameters refused with
-# exit 1 or 3 and no output file.
+# reported shell), reports with their keys, a part too thin for a cavity
+# returned solid with a warning, bad parameters refused with exit 1 or 3 and
+# no output file.
 source "$(dirname "$0")/lib.sh"
 
 number() {  # number FILE KEY: the first number after "KEY": in a JSON file
@@ -55,12 +56,17 @@ expect_match "$(cat "$WORK/lattice.json")" '"cavity_count": 1'
 check_hollowed "$WORK/lattice.stl" "$WORK/lattice.json"
 expect_match "$(cat "$WORK/info.json")" '"components": 2'
 
+# A part nowhere thicker than twice the wall comes back solid: exit 0, a
+# warning, cavity_count 0, the output one closed clean shell.
+expect_exit 0 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/thin.stl" --wall 25mm --report "$WORK/thin.json"
+expect_match "$STDERR" "warning: .*no cavity"
+expect_match "$(cat "$WORK/thin.json")" '"cavity_count": 0'
+check_hollowed "$WORK/thin.stl" "$WORK/thin.json"
+expect_match "$(cat "$WORK/info.json")" '"components": 1'
+
 # Bad parameters: exit 1 (or 3 for the budget) and no output.
 expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --wall 0mm
 expect_match "$STDERR" "wall"
-expect_no_file "$WORK/bad.stl"
-expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --wall 25mm
-expect_match "$STDERR" "no cavity"
 expect_no_file "$WORK/bad.stl"
 expect_exit 3 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --wall 2mm --voxel 0.002mm \
   --max-memory 64M

@@ -27,8 +27,42 @@ expect_exit 0 "$FABVDB" repair "$WORK/sheet.obj" -o "$WORK/thick.stl" --voxel 0.
 expect_exit 0 "$FABVDB" info "$WORK/thick.stl" --report "$WORK/thick.json"
 expect_match "$(cat "$WORK/thick.json")" '"closed": true'
 
+# A soup of 100 unrelated, partly crossing triangles encloses nothing:
+# refused at once with exit 2 (before, this one took 24 s and wrote a
+# 155k-triangle mesh with 132 crossing pairs, exit 0), and made a closed
+# solid with --thicken.
+awk 'BEGIN { srand(7); for (t = 0; t < 100; ++t) {
+  x = 100 * rand(); y = 100 * rand(); z = 100 * rand()
+  for (k = 0; k < 3; ++k) printf "v %.6f %.6f %.6f\n", x + 30 * rand() - 15, y + 30 * rand() - 15, z + 30 * rand() - 15
+  printf "f %d %d %d\n", 3 * t + 1, 3 * t + 2, 3 * t + 3 } }' >"$WORK/soup.obj"
+expect_exit 2 "$FABVDB" repair "$WORK/soup.obj" -o "$WORK/soup.stl"
+expect_match "$STDERR" "soup.obj: encloses no volume"
+expect_no_file "$WORK/soup.stl"
+expect_exit 0 "$FABVDB" repair "$WORK/soup.obj" -o "$WORK/soup.stl" --thicken 1mm --quiet
+expect_exit 0 "$FABVDB" info "$WORK/soup.stl" --report "$WORK/soup.json"
+expect_match "$(cat "$WORK/soup.json")" '"closed": true'
+expect_match "$(cat "$WORK/soup.json")" '"self_intersecting_pairs": 0'
+expect_match "$(cat "$WORK/soup.json")" '"degenerate_triangles": 0'
+
+# A clean solid comes out with its own triangles; --volumetric re-meshes it.
+expect_exit 0 "$FABVDB" repair "$MESHES/bunny.off" -o "$WORK/bunny.obj" --report "$WORK/bunny.json"
+expect_match "$STDERR" "already was a clean solid"
+expect_match "$(cat "$WORK/bunny.json")" '"path": "input"'
+expect_match "$(cat "$WORK/bunny.json")" '"output_triangles": 6966'
+expect_exit 0 cmp <(grep -c '^f ' "$WORK/bunny.obj") <(echo 6966)
+expect_exit 0 "$FABVDB" repair "$MESHES/bunny.off" -o "$WORK/bunny_voxels.stl" --volumetric --resolution 64 \
+  --report "$WORK/bunny_voxels.json" --quiet
+expect_match "$(cat "$WORK/bunny_voxels.json")" '"path": "volumetric"'
+
+# Crossing shells and flipped soups are fixed at mesh level when that makes a clean solid.
+expect_exit 0 "$FABVDB" repair "$MESHES/multibody.stl" -o "$WORK/multibody.ply" --report "$WORK/multibody.json" --quiet
+expect_match "$(cat "$WORK/multibody.json")" '"path": "\(input\|mesh\)"'
+expect_exit 0 "$FABVDB" info "$WORK/multibody.ply" --report "$WORK/info.json"
+expect_match "$(cat "$WORK/info.json")" '"closed": true'
+expect_match "$(cat "$WORK/info.json")" '"self_intersecting_pairs": 0'
+
 # Over the memory budget: exit 3, a voxel size that fits is proposed, no output.
-expect_exit 3 "$FABVDB" repair "$MESHES/bunny.off" -o "$WORK/big.stl" --voxel 0.00001mm --max-memory 64M
+expect_exit 3 "$FABVDB" repair "$MESHES/bunny.off" -o "$WORK/big.stl" --volumetric --voxel 0.00001mm --max-memory 64M
 expect_match "$STDERR" "--voxel"
 expect_no_file "$WORK/big.stl"
 

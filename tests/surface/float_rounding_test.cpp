@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "support/ray_cast.h"
+#include "support/defect_shapes.h"
 #include "support/shapes.h"
 #include "surface/float_rounding.h"
 #include "surface/mesh_boolean.h"
@@ -34,27 +35,6 @@ Mesh slit_box(double thickness) {
     fabvdb::Progress progress;
     return fabvdb::surface::mesh_boolean(block, "block", {{fabvdb::surface::BooleanOperation::subtract, &slit, "slit"}},
                                         progress);
-}
-
-// Box [100, 110]³ whose top face has two vertices 1e-7 mm apart in its
-// middle, which the nearest floats merge into one point.
-Mesh box_with_close_pair() {
-    Mesh box = fabvdb::test::make_box({100, 100, 100}, {110, 110, 110});
-    const uint32_t c00 = 4, c10 = 5, c01 = 6, c11 = 7;  // the top corners (x, y bits) of make_box
-    for (uint32_t v : {c00, c10, c01, c11}) EXPECT_EQ(box.vertices[v][2], 110.0);
-    box.triangles.erase(std::remove_if(box.triangles.begin(), box.triangles.end(),
-                                       [&](const fabvdb::Triangle& t) {
-                                           return box.vertices[t[0]][2] == 110 && box.vertices[t[1]][2] == 110 &&
-                                                  box.vertices[t[2]][2] == 110;
-                                       }),
-                        box.triangles.end());
-    const uint32_t p = uint32_t(box.vertices.size()), q = p + 1;
-    box.vertices.push_back({105, 105.0000001, 110});
-    box.vertices.push_back({105.0000001, 105, 110});
-    // Counter-clockwise seen from above: c00, c10, c11, c01 around p and q.
-    box.triangles.insert(box.triangles.end(), {{c00, c10, q}, {c10, c11, q}, {c11, p, q}, {c11, c01, p},
-                                               {c01, c00, p}, {c00, q, p}});
-    return box;
 }
 
 void expect_valid_float_solid(const Mesh& source, const Mesh& rounded, double max_move) {
@@ -90,7 +70,7 @@ TEST(FloatRounding, MicrometreSlitIsRoundedWithoutCrossings) {
 }
 
 TEST(FloatRounding, CloseVerticesMergedByRoundingAreCollapsed) {
-    const Mesh box = box_with_close_pair();
+    const Mesh box = fabvdb::test::make_box_with_close_pair();
     ASSERT_TRUE(fabvdb::test::closed_two_manifold(box));
     ASSERT_FALSE(fabvdb::test::self_intersects(box));
     ASSERT_GT(fabvdb::test::degenerate_triangle_count(fabvdb::test::stored_as_float(box)), 0u);

@@ -96,6 +96,23 @@ TEST(Inspect, BoxIsCleanAndItsVolumeExact) {
     EXPECT_TRUE(r["welded"]["closed"].get<bool>());
 }
 
+// Sizes that suggest other units, and places far from the origin, are
+// warned about; a part in millimetres near the origin is not.
+TEST(Inspect, SizeAndPlaceSuggestingOtherUnitsAreWarnedAbout) {
+    EXPECT_EQ(inspect(fabvdb::test::make_box({1, 2, 3}, {2, 4, 6}))["warnings"], json::array());
+    const json metres = inspect(fabvdb::test::make_box({0, 0, 0}, {0.045, 0.03, 0.01}))["warnings"];
+    ASSERT_EQ(metres.size(), 1u);
+    EXPECT_NE(metres[0].get<std::string>().find("0.045 mm across"), std::string::npos) << metres[0];
+    EXPECT_NE(metres[0].get<std::string>().find("--scale 1000"), std::string::npos) << metres[0];
+    const json huge = inspect(fabvdb::test::make_box({0, 0, 0}, {3000, 10, 10}))["warnings"];
+    ASSERT_EQ(huge.size(), 1u);
+    EXPECT_NE(huge[0].get<std::string>().find("3e+03 mm across"), std::string::npos) << huge[0];
+    const json far = inspect(fabvdb::test::make_box({4e6, 0, 0}, {4e6 + 40, 40, 40}))["warnings"];
+    ASSERT_EQ(far.size(), 1u);
+    EXPECT_NE(far[0].get<std::string>().find("from the origin"), std::string::npos) << far[0];
+    EXPECT_NE(far[0].get<std::string>().find("0.25 mm apart"), std::string::npos) << far[0];
+}
+
 TEST(Inspect, TorusHasGenusOne) {
     const Mesh torus = fabvdb::test::make_torus({0, 0, 0}, 3.0, 1.0, 32, 16);
     const json r = inspect(torus);

@@ -199,6 +199,8 @@ TEST(Hollow, SlabTooThinForTheClosingStaysSolid) {
     EXPECT_TRUE(solid.filled_cavity_volumes.empty());
     EXPECT_EQ(solid.mesh.triangles.size(), thin.triangles.size());
     EXPECT_NEAR(solid.volume_shell, 40.0 * 40.0 * 8.0, 1e-6);
+    ASSERT_EQ(solid.warnings.size(), 1u);
+    EXPECT_NE(solid.warnings[0].find("no cavity"), std::string::npos) << solid.warnings[0];
     const Inspected solid_shells = inspect(solid.mesh);
     expect_valid_shells(solid_shells, "thin slab");
     EXPECT_EQ(solid_shells.cavity_shells, 0);
@@ -206,6 +208,7 @@ TEST(Hollow, SlabTooThinForTheClosingStaysSolid) {
 
     const HollowResult hollowed = hollow(test::make_box({0, 0, 0}, {40, 40, 12}), options_with(3.0, 0.5, 2.0), progress);
     ASSERT_EQ(hollowed.cavity_volumes.size(), 1u);
+    EXPECT_TRUE(hollowed.warnings.empty());
     const Inspected shells = inspect(hollowed.mesh);
     expect_valid_shells(shells, "thick slab");
     EXPECT_EQ(shells.cavity_shells, 1);
@@ -375,12 +378,12 @@ TEST(Hollow, DirtyInputLeavesNoSpecksInTheWall) {
 
 TEST(Hollow, SharedMeshesHollowIntoClosedDisjointShells) {
     const std::string folder = FABVDB_SHARED_DATA "/meshes/";
-    // The refusals, with their reasons: triangles that enclose no volume, and
-    // parts nowhere thicker than twice the wall at this scale.
+    // The refusals: triangles that enclose no volume. Parts nowhere thicker
+    // than twice the wall at this scale (multibody.stl) come back solid.
     const std::map<std::string, fabvdb_status> refused = {
         {"degenerated.obj", FABVDB_ERR_BAD_INPUT},
         {"quads_to_stitch.off", FABVDB_ERR_BAD_INPUT},
-        {"multibody.stl", FABVDB_ERR_INVALID_ARGUMENT}};
+        {"non_manifold_face_graph.off", FABVDB_ERR_BAD_INPUT}};
     int hollowed = 0;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
         const std::string name = entry.path().filename().string();
@@ -476,6 +479,25 @@ TEST(Hollow, GyroidInfillJoinsTheWallAndKeepsOneOpenCavity) {
     EXPECT_NEAR(infill, expected, 0.08 * expected);
 }
 
+// A wall thicker than half the part leaves no room for a cavity anywhere:
+// the part comes back as it was, solid, with a warning (a farm's batch needs
+// the part, not an error).
+TEST(Hollow, PartTooThinForAnyCavityComesBackSolid) {
+    const Mesh sphere = test::make_sphere({0, 0, 0}, 10, 3);
+    Progress progress;
+    HollowOptions options = options_with(12.0, 1.0);
+    options.input_name = "sphere";
+    const HollowResult result = hollow(sphere, options, progress);
+    EXPECT_EQ(result.outer_surface, "input");
+    EXPECT_TRUE(result.cavity_volumes.empty());
+    EXPECT_EQ(result.mesh.vertices, sphere.vertices);
+    EXPECT_EQ(result.mesh.triangles, sphere.triangles);
+    EXPECT_NEAR(result.volume_shell, test::mesh_volume(sphere), 1e-9 * test::mesh_volume(sphere));
+    ASSERT_EQ(result.warnings.size(), 1u);
+    EXPECT_NE(result.warnings[0].find("sphere: wall 12 mm"), std::string::npos) << result.warnings[0];
+    EXPECT_NE(result.warnings[0].find("returned solid"), std::string::npos) << result.warnings[0];
+}
+
 TEST(Hollow, BadParameters) {
     const Mesh sphere = test::make_sphere({0, 0, 0}, 10, 3);
     Progress progress;
@@ -489,7 +511,6 @@ TEST(Hollow, BadParameters) {
     };
     EXPECT_EQ(status_of(options_with(0.0, 0.5)), FABVDB_ERR_INVALID_ARGUMENT);
     EXPECT_EQ(status_of(options_with(-1.0, 0.5)), FABVDB_ERR_INVALID_ARGUMENT);
-    EXPECT_EQ(status_of(options_with(12.0, 1.0)), FABVDB_ERR_INVALID_ARGUMENT);  // thicker than the part
     EXPECT_EQ(status_of(options_with(2.0, 0.5, -1.0)), FABVDB_ERR_INVALID_ARGUMENT);
     HollowOptions lattice = options_with(2.0, 0.5);
     lattice.infill = {8.0, 2.5};  // struts wider than a quarter of the cell

@@ -370,3 +370,28 @@ TEST(Repair, CancelledGivesNoResult) {
 }
 
 }  // namespace
+
+namespace {
+
+// A scan with a hole stored in survey coordinates, tens of kilometres from
+// the origin (where floats are a millimetre apart): repaired as well as at
+// the origin, closed, clean and within a voxel of the sphere it samples.
+TEST(Repair, FarFromTheOriginRepairsAsNearIt) {
+    const fabvdb::Vec3 centre{2.5e7, -3.1e7, 4.2e5};
+    Mesh scan = fabvdb::test::make_sphere(centre, 10.0, 3);
+    scan.triangles.resize(scan.triangles.size() - 6);
+    const volume::RepairResult result = repair(scan, 40);
+    SurfaceMesh surface;
+    expect_solid(result.mesh, "far scan", surface);
+    const double voxel = result.grid->voxelSize()[0];
+    double worst = 0.0;
+    for (const fabvdb::Vec3& p : result.mesh.vertices)
+        worst = std::max(worst, std::abs(std::hypot(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]) - 10.0));
+    EXPECT_LT(worst, voxel);
+    // The level set sits where the model is.
+    const openvdb::Vec3d world = result.grid->indexToWorld(openvdb::Vec3d(0, 0, 0));
+    EXPECT_NEAR(world.x(), centre[0], 20.0);
+    EXPECT_NEAR(world.y(), centre[1], 20.0);
+}
+
+}  // namespace

@@ -1,0 +1,21 @@
+//! Synthetic meshes with a known defect, for the robustness tests: a clean
+//! solid that the float coordinates of STL break, and a soup of unrelated
+//! triangles that encloses nothing.
+#pragma once
+
+#include <cstdint>
+
+#include "core/mesh.h"
+
+namespace fabvdb::test {
+
+//! Box [100, 110]³ whose top face has two vertices 1e-7 mm apart in its
+//! middle: a clean solid in doubles that the nearest floats (what STL
+//! stores) turn degenerate, merging the two into one point.
+Mesh make_box_with_close_pair();
+//! `count` unrelated triangles (no shared vertex) scattered through the box
+//! [0, side]³, each corner within `spread` of its triangle's centre on each
+//! axis; the same for the same `seed`.
+Mesh make_triangle_soup(uint32_t count, double side, double spread, unsigned seed);
+
+}  // namespace fabvdb::test
