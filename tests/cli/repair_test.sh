@@ -38,7 +38,7 @@ awk 'BEGIN { srand(7); for (t = 0; t < 100; ++t) {
 expect_exit 2 "$FABVDB" repair "$WORK/soup.obj" -o "$WORK/soup.stl"
 expect_match "$STDERR" "soup.obj: encloses no volume"
 expect_no_file "$WORK/soup.stl"
-expect_exit 0 "$FABVDB" repair "$WORK/soup.obj" -o "$WORK/soup.stl" --thicken 1mm --quiet
+expect_exit 0 "$FABVDB" repair "$WORK/soup.obj" -o "$WORK/soup.stl" --thicken 1mm --resolution 100 --quiet
 expect_exit 0 "$FABVDB" info "$WORK/soup.stl" --report "$WORK/soup.json"
 expect_match "$(cat "$WORK/soup.json")" '"closed": true'
 expect_match "$(cat "$WORK/soup.json")" '"self_intersecting_pairs": 0'
