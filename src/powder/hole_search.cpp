@@ -82,11 +82,7 @@ public:
 
     //! The lowest residual among `sites` added to `drain`'s holes.
     Choice best_of(const DrainabilityModel::Drain& drain, const std::vector<size_t>& sites) {
-        const std::vector<double> residual = residuals_with(drain, sites);
-        Choice best;
-        for (size_t k = 0; k < sites.size(); ++k)
-            if (!best.found || residual[k] < best.residual) best = {sites[k], residual[k], true};
-        return best;
+        return lowest(sites, residuals_with(drain, sites));
     }
 
     bool allowed(size_t c, const std::vector<DrainHole>& holes, int only_cavity) const {
@@ -142,7 +138,9 @@ public:
     //! reach costs far more than a cone's).
     Choice best_predicted_move(const std::vector<size_t>& others, const DrainHole& hole, int only_cavity) {
         const DrainabilityModel::Crater surface = DrainabilityModel::Crater::surface;
-        std::vector<size_t> sites = near(hole, predicted_drain(others).holes, only_cavity);
+        std::vector<DrainHole> holes;
+        for (size_t c : others) holes.push_back(candidates_[c]);
+        std::vector<size_t> sites = near(hole, holes, only_cavity);
         if (sites.size() > kPolishSites) {
             const std::vector<double> by_cone = residuals_with(drain(others), sites);
             std::vector<size_t> order(sites.size());
@@ -160,14 +158,18 @@ public:
             with.push_back(sites[k]);
             residual[k] = model_.predicted_residual(drain_of(with, surface_reach_));
         });
+        return lowest(sites, residual);
+    }
+
+private:
+    using Reaches = std::vector<std::shared_ptr<const DrainabilityModel::Reach>>;
+    //! The site of `sites` with the lowest `residual` (same order).
+    static Choice lowest(const std::vector<size_t>& sites, const std::vector<double>& residual) {
         Choice best;
         for (size_t k = 0; k < sites.size(); ++k)
             if (!best.found || residual[k] < best.residual) best = {sites[k], residual[k], true};
         return best;
     }
-
-private:
-    using Reaches = std::vector<std::shared_ptr<const DrainabilityModel::Reach>>;
     //! The allowed candidates within half the spacing of `hole`.
     std::vector<size_t> near(const DrainHole& hole, const std::vector<DrainHole>& holes, int only_cavity) const {
         std::vector<size_t> sites;
@@ -323,7 +325,6 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     if (lowest_kept < kept) {
         chosen = lowest;
         kept = lowest_kept;
-        result.from_baseline = true;
     }
     swap_holes(kept, [&](const std::vector<size_t>& others, const DrainHole& moved) {
         return search.best_predicted_move(others, moved, int(moved.cavity));

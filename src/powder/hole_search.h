@@ -59,7 +59,6 @@ struct HoleSearchResult {
     DrainEvaluation baseline_evaluation;
     double baseline_routine_residual = 0.0;
     int swaps = 0;
-    bool from_baseline = false;  //!< the polish started from the lowest-point holes
 };
 
 //! `first_gravity`: gravity as printed, which the lowest-point holes are lowest along.
