@@ -545,6 +545,209 @@ FABVDB_API fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mes
                                                const char* out_dir, fabvdb_report** out_report);
 
 /* ------------------------------------------------------------------------- */
+/* Decomposition sessions (fabvdb studio)                                     */
+/* ------------------------------------------------------------------------- */
+/* A mold decomposition being edited interactively (thesis section 3.5): made
+ * once from a mesh (pre-computation, automatic decomposition, boundary
+ * smoothing) or from a decomposition.json, then changed one step at a time by
+ * edits (each recomputes only the parts it touches) or a re-run with another
+ * gamma, part count or draft, with undo and redo over every step. Every call
+ * is atomic: it succeeds whole or leaves the session as it was (a refused
+ * edit, a cancel). A session is used by one thread at a time; distinct
+ * sessions are independent. (since 0.1) */
+typedef struct fabvdb_decomposition fabvdb_decomposition;
+
+/* Edit types, numbered explicitly. (since 0.1) */
+typedef enum fabvdb_edit_type {
+    /* A brush stroke (points, radius): the S_low triangles within radius of a
+     * point (their largest connected piece) end up inside one part; the parts
+     * the stroke touches are regrown together. */
+    FABVDB_EDIT_NO_CUT = 0,
+    /* A cut through click-placed points (at least two), snapped to S_low
+     * vertices and joined by shortest edge paths: splits every part it
+     * separates; each piece gets its best parting direction. */
+    FABVDB_EDIT_CUT = 1,
+    /* Two points: the (neighbouring) parts under them become one. */
+    FABVDB_EDIT_MERGE = 2,
+    /* A brush stroke (points, radius): the part boundaries within radius of
+     * a point are smoothed (snakes). */
+    FABVDB_EDIT_SMOOTH = 3
+} fabvdb_edit_type;
+
+/* Bits of fabvdb_edit.flags. (since 0.1) */
+#define FABVDB_EDIT_CLOSED 1u /* a cut's last point joins its first */
+
+/* One edit, in world coordinates (mm), so it survives remeshing. Fill with
+ * fabvdb_edit_init(). (since 0.1) */
+typedef struct fabvdb_edit {
+    size_t struct_size;     /* sizeof(fabvdb_edit), set by _init */
+    fabvdb_edit_type type;  /* default FABVDB_EDIT_NO_CUT */
+    const double* points;   /* 3*point_count doubles, borrowed for the call; default NULL */
+    size_t point_count;     /* default 0 */
+    double radius;          /* brush radius, mm, > 0 for NO_CUT and SMOOTH; default 0 */
+    unsigned flags;         /* FABVDB_EDIT_* bits; default 0 */
+} fabvdb_edit;
+
+/* Fills *edit with the defaults above. NULL does nothing. Thread-safe. (since 0.1) */
+FABVDB_API void fabvdb_edit_init(fabvdb_edit* edit);
+
+/* Makes a session: the robust level set, S_low and its prisms, the
+ * moldability terms of the 162 directions, the automatic decomposition and
+ * the boundary smoothing, as fabvdb_mesh_decompose does with the same options.
+ * mesh: borrowed (copied into the session). opts: NULL for the defaults.
+ * out: receives the session, owned by the caller (fabvdb_decomposition_free).
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (NULL handle or out, an
+ * option out of range), FABVDB_ERR_BAD_INPUT (a mesh enclosing no volume),
+ * FABVDB_ERR_OUT_OF_BUDGET, FABVDB_ERR_OUT_OF_MEMORY, FABVDB_ERR_CANCELLED.
+ * Reports progress. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_new(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                                  const fabvdb_decompose_options* opts, fabvdb_decomposition** out);
+/* Makes a session from a decomposition.json (written by fabvdb_mesh_decompose
+ * or fabvdb_decomposition_write) of `mesh`: its S_low, labels and parting
+ * directions; the moldability terms are computed again and the parting lines
+ * recomputed. The session's first step is that decomposition (no edits).
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT, FABVDB_ERR_IO (unreadable
+ * file), FABVDB_ERR_BAD_INPUT (malformed, or of another model or scale: the
+ * message names the file and the defect), FABVDB_ERR_OUT_OF_MEMORY,
+ * FABVDB_ERR_CANCELLED. Reports progress. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_read(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const char* path,
+                                                   fabvdb_decomposition** out);
+/* Frees a session. NULL does nothing. (since 0.1) */
+FABVDB_API void fabvdb_decomposition_free(fabvdb_decomposition* session);
+
+/* Applies one edit. On success it is a new undoable step and the redo steps
+ * are dropped. Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (NULL handle,
+ * struct_size too small, an unknown type), FABVDB_ERR_BAD_INPUT (a malformed
+ * edit: no points, a non-finite point, radius <= 0 for a brush, a cut of
+ * fewer than two points, a merge not of two; or an edit that does not apply:
+ * a cut that separates nothing, a merge of one part or of parts that do not
+ * touch, a smoothing stroke that reaches no part boundary — the message says
+ * which), FABVDB_ERR_CANCELLED, FABVDB_ERR_OUT_OF_MEMORY; on failure the
+ * session is unchanged. Reports progress. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_apply(fabvdb_ctx* ctx, fabvdb_decomposition* session,
+                                                    const fabvdb_edit* edit);
+/* Applies one edit given as JSON text: one object of the edits file that
+ * fabvdb_mesh_decompose reads, e.g. {"type": "cut", "points": [[x,y,z],
+ * [x,y,z]], "closed": false} (for front ends that speak JSON). Returns as
+ * fabvdb_decomposition_apply; malformed JSON or a malformed edit is
+ * FABVDB_ERR_BAD_INPUT with the defect in the message. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_apply_json(fabvdb_ctx* ctx, fabvdb_decomposition* session,
+                                                         const char* edit_json);
+/* Runs the automatic decomposition again from S_low as it was before any
+ * smoothing, with opts' gamma, parts, max_parts, draft_degrees, w_overhang,
+ * w_overlap, w_coarse_overlap, smoothing_iterations and w_smooth (the other
+ * fields are those the session was made with and are ignored). The edit list
+ * starts anew; one undoable step. Returns FABVDB_OK,
+ * FABVDB_ERR_INVALID_ARGUMENT (an option out of range), FABVDB_ERR_CANCELLED,
+ * FABVDB_ERR_OUT_OF_MEMORY; on failure the session is unchanged. Reports
+ * progress. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_rerun(fabvdb_ctx* ctx, fabvdb_decomposition* session,
+                                                    const fabvdb_decompose_options* opts);
+/* The options of the session's current step (the fields rerun reads; the
+ * others as the session was made), into *out (its struct_size must be set).
+ * Returns FABVDB_OK or FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_get_options(fabvdb_ctx* ctx, const fabvdb_decomposition* session,
+                                                          fabvdb_decompose_options* out);
+/* Steps back to the previous step / forward to the one undone last. Returns
+ * FABVDB_OK, FABVDB_ERR_NOT_FOUND (no such step; nothing changes) or
+ * FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_undo(fabvdb_ctx* ctx, fabvdb_decomposition* session);
+FABVDB_API fabvdb_status fabvdb_decomposition_redo(fabvdb_ctx* ctx, fabvdb_decomposition* session);
+
+/* A summary of the current step. Fill struct_size (fabvdb_decomposition_info_init). (since 0.1) */
+typedef struct fabvdb_decomposition_info {
+    size_t struct_size;
+    size_t part_count;
+    double total_energy;  /* sum of the parts' moldability energies (unit-cube area) */
+    double gamma;
+    int over_gamma;       /* 1: total_energy >= gamma, the designer should be warned */
+    double draft_degrees;
+    size_t undo_steps;    /* steps fabvdb_decomposition_undo can take back */
+    size_t redo_steps;
+    size_t edit_count;    /* edits since the last automatic decomposition */
+    double last_step_seconds; /* wall time of the last apply/rerun/undo/redo in the library */
+} fabvdb_decomposition_info;
+/* Sets struct_size and zeroes the rest. NULL does nothing. (since 0.1) */
+FABVDB_API void fabvdb_decomposition_info_init(fabvdb_decomposition_info* info);
+FABVDB_API fabvdb_status fabvdb_decomposition_get_info(fabvdb_ctx* ctx, const fabvdb_decomposition* session,
+                                                       fabvdb_decomposition_info* out);
+
+/* One part of the current step. Fill struct_size (fabvdb_part_info_init). (since 0.1) */
+typedef struct fabvdb_part_info {
+    size_t struct_size;
+    double direction[3];    /* unit parting direction d (M+ is pulled along +d) */
+    double energy;          /* E_P = w_H E_H + w_L E_L (unit-cube area) */
+    double overhang_energy; /* E_H */
+    double overlap_energy;  /* E_L */
+    double area;            /* outer area, mm^2 */
+    size_t triangle_count;  /* S_low triangles in the part */
+} fabvdb_part_info;
+/* Sets struct_size and zeroes the rest. NULL does nothing. (since 0.1) */
+FABVDB_API void fabvdb_part_info_init(fabvdb_part_info* info);
+/* Returns FABVDB_OK, FABVDB_ERR_NOT_FOUND (part >= part_count) or
+ * FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_get_part(fabvdb_ctx* ctx, const fabvdb_decomposition* session,
+                                                       size_t part, fabvdb_part_info* out);
+
+/* Arrays of the current step, owned by the session and valid until the next
+ * call that changes it (apply, rerun, undo, redo) or its free. A NULL session
+ * gives 0 / NULL. (since 0.1) */
+/* S_low: vertex_count*3 doubles (mm) and triangle_count*3 indices. Smoothing
+ * moves vertices; the triangles never change within a session. */
+FABVDB_API size_t fabvdb_decomposition_vertex_count(const fabvdb_decomposition* session);
+FABVDB_API const double* fabvdb_decomposition_vertices(const fabvdb_decomposition* session);
+FABVDB_API size_t fabvdb_decomposition_triangle_count(const fabvdb_decomposition* session);
+FABVDB_API const uint32_t* fabvdb_decomposition_triangles(const fabvdb_decomposition* session);
+/* Per S_low triangle: its part (0 .. part_count-1). */
+FABVDB_API const int32_t* fabvdb_decomposition_labels(const fabvdb_decomposition* session);
+/* Per S_low triangle: 1 if its outer face is in M+ (the mold half pulled
+ * along +d of its part), 0 if in M-. */
+FABVDB_API const uint8_t* fabvdb_decomposition_sides(const fabvdb_decomposition* session);
+/* Per S_low triangle: the estimated deformation (its share of the weighted
+ * moldability energy per unit-cube area, >= 0), the thesis' heat map. */
+FABVDB_API const float* fabvdb_decomposition_deformation(const fabvdb_decomposition* session);
+
+/* Kinds of polylines. (since 0.1) */
+#define FABVDB_LINES_PARTING 0  /* the parting lines (M+ meets M-) of every part */
+#define FABVDB_LINES_BOUNDARY 1 /* the boundaries between parts (each seen from both parts) */
+/* The polylines of one kind: *points receives 3*(*point_count) doubles (mm),
+ * *starts line_count+1 offsets into the points (line i is points
+ * starts[i] .. starts[i+1]-1; a closed loop repeats its first point),
+ * *parts the part of each line. Arrays owned as above. Returns FABVDB_OK or
+ * FABVDB_ERR_INVALID_ARGUMENT (NULL handle or out-parameter, unknown kind).
+ * (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_lines(fabvdb_ctx* ctx, const fabvdb_decomposition* session, int kind,
+                                                    const double** points, size_t* point_count,
+                                                    const size_t** starts, const int32_t** parts,
+                                                    size_t* line_count);
+
+/* Classes of the draft map. (since 0.1) */
+#define FABVDB_DRAFT_POSITIVE 0 /* n.d >= sin(draft): releases from the half pulled along +d */
+#define FABVDB_DRAFT_NEGATIVE 1 /* n.d <= -sin(draft): releases from the half pulled along -d */
+#define FABVDB_DRAFT_NEEDED 2   /* |n.d| < sin(draft): steeper than the draft angle */
+#define FABVDB_DRAFT_UNDERCUT 3 /* S_low lies in front of it along the side it faces */
+/* Classifies every S_low triangle of the current step for pulling direction
+ * `direction` (3 doubles, any non-zero vector) and draft angle draft_degrees
+ * in [0, 30]. out: triangle_count bytes, caller-owned. Returns FABVDB_OK or
+ * FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_draft_map(fabvdb_ctx* ctx, const fabvdb_decomposition* session,
+                                                        const double direction[3], double draft_degrees,
+                                                        uint8_t* out);
+
+/* Writes the current step as fabvdb_mesh_decompose writes its folder
+ * (decomposition.json, which fabvdb_mesh_mold and fabvdb_decomposition_read
+ * take, decomposition.ply, deformation.ply), atomically into out_dir.
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT, FABVDB_ERR_IO. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_write(fabvdb_ctx* ctx, const fabvdb_decomposition* session,
+                                                    const char* out_dir);
+/* Writes the edits since the last automatic decomposition as the JSON file
+ * fabvdb_mesh_decompose's edits_path (fabvdb decompose --edits) replays, with
+ * a "settings" object holding the options to replay them with; atomically.
+ * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT, FABVDB_ERR_IO. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_decomposition_write_edits(fabvdb_ctx* ctx, const fabvdb_decomposition* session,
+                                                          const char* path);
+
+/* ------------------------------------------------------------------------- */
 /* Molds (fabvdb mold)                                                        */
 /* ------------------------------------------------------------------------- */
 /* Bits of fabvdb_mold_options.flags. (since 0.1) */

@@ -3,13 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "api/decompose_settings.h"
 #include "api/guard.h"
 #include "surface/decompose.h"
 #include "surface/decomposition_io.h"
 
+namespace fabvdb::api {
+
 namespace {
 
-const fabvdb_decompose_options& options_or_defaults(const fabvdb_decompose_options* options,
+void require_range(bool ok, const char* message) {
+    if (!ok) throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, message);
+}
+
+}  // namespace
+
+const fabvdb_decompose_options& decompose_options_or_defaults(const fabvdb_decompose_options* options,
                                                     fabvdb_decompose_options& defaults) {
     fabvdb_decompose_options_init(&defaults);
     if (!options) return defaults;
@@ -19,11 +28,7 @@ const fabvdb_decompose_options& options_or_defaults(const fabvdb_decompose_optio
     return *options;
 }
 
-void require_range(bool ok, const char* message) {
-    if (!ok) throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, message);
-}
-
-fabvdb::surface::DecomposeSettings settings_for(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
+fabvdb::surface::DecomposeSettings decompose_settings(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
                                                 const fabvdb_decompose_options& o) {
     require_range(std::isfinite(o.shell_thickness) && o.shell_thickness >= 0, "shell_thickness must be >= 0");
     require_range(std::isfinite(o.gamma) && o.gamma > 0, "gamma must be > 0");
@@ -54,7 +59,7 @@ fabvdb::surface::DecomposeSettings settings_for(const fabvdb_ctx* ctx, const fab
     return s;
 }
 
-}  // namespace
+}  // namespace fabvdb::api
 
 extern "C" {
 
@@ -82,8 +87,8 @@ fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, co
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out_dir, "out_dir");
         fabvdb_decompose_options defaults;
-        const fabvdb_decompose_options& options = options_or_defaults(opts, defaults);
-        const fabvdb::surface::DecomposeSettings settings = settings_for(ctx, mesh->mesh, options);
+        const fabvdb_decompose_options& options = fabvdb::api::decompose_options_or_defaults(opts, defaults);
+        const fabvdb::surface::DecomposeSettings settings = fabvdb::api::decompose_settings(ctx, mesh->mesh, options);
         const std::vector<fabvdb::surface::Edit> edits =
             edits_path ? fabvdb::surface::read_edits(edits_path) : std::vector<fabvdb::surface::Edit>{};
         fabvdb::Progress progress = ctx->make_progress();

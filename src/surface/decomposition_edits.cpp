@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <queue>
@@ -272,6 +273,36 @@ Vec3 read_point(const nlohmann::json& value, const std::string& what) {
 
 }  // namespace
 
+Edit parse_edit(const nlohmann::json& item, const std::string& what) {
+    if (!item.is_object() || !item.contains("type") || !item["type"].is_string())
+        throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"type\"");
+    Edit edit;
+    const std::string type = item["type"];
+    if (type == "no_cut")
+        edit.type = Edit::no_cut;
+    else if (type == "cut")
+        edit.type = Edit::cut;
+    else if (type == "merge")
+        edit.type = Edit::merge;
+    else if (type == "smooth")
+        edit.type = Edit::smooth;
+    else
+        throw Error(FABVDB_ERR_BAD_INPUT, what + ": unknown type \"" + type + "\" (no_cut, cut, merge, smooth)");
+    if (!item.contains("points") || !item["points"].is_array() || item["points"].empty())
+        throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"points\"");
+    for (const auto& p : item["points"]) edit.points.push_back(read_point(p, what));
+    if (item.contains("radius")) {
+        if (!item["radius"].is_number()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": \"radius\" is not a number");
+        edit.radius = item["radius"];
+    }
+    if (item.contains("closed")) {
+        if (!item["closed"].is_boolean()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": \"closed\" is not a boolean");
+        edit.closed = item["closed"];
+    }
+    check_edit(edit, what);
+    return edit;
+}
+
 std::vector<Edit> read_edits(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw Error(FABVDB_ERR_IO, path + ": cannot open the edits file");
@@ -284,42 +315,44 @@ std::vector<Edit> read_edits(const std::string& path) {
     if (!document.is_object() || !document.contains("edits") || !document["edits"].is_array())
         throw Error(FABVDB_ERR_BAD_INPUT, path + ": expected an object with an \"edits\" array");
     std::vector<Edit> edits;
-    for (size_t i = 0; i < document["edits"].size(); ++i) {
-        const nlohmann::json& item = document["edits"][i];
-        const std::string what = path + ": edit " + std::to_string(i + 1);
-        if (!item.is_object() || !item.contains("type") || !item["type"].is_string())
-            throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"type\"");
-        Edit edit;
-        const std::string type = item["type"];
-        if (type == "no_cut")
-            edit.type = Edit::no_cut;
-        else if (type == "cut")
-            edit.type = Edit::cut;
-        else if (type == "merge")
-            edit.type = Edit::merge;
-        else if (type == "smooth")
-            edit.type = Edit::smooth;
-        else
-            throw Error(FABVDB_ERR_BAD_INPUT, what + ": unknown type \"" + type + "\" (no_cut, cut, merge, smooth)");
-        if (!item.contains("points") || !item["points"].is_array() || item["points"].empty())
-            throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"points\"");
-        for (const auto& p : item["points"]) edit.points.push_back(read_point(p, what));
-        if (edit.type == Edit::no_cut || edit.type == Edit::smooth) {
-            if (!item.contains("radius") || !item["radius"].is_number() || !(item["radius"].get<double>() > 0))
-                throw Error(FABVDB_ERR_BAD_INPUT, what + ": a " + type + " stroke needs \"radius\" > 0");
-            edit.radius = item["radius"];
-        }
-        if (edit.type == Edit::cut && edit.points.size() < 2)
-            throw Error(FABVDB_ERR_BAD_INPUT, what + ": a cut needs at least two points");
-        if (edit.type == Edit::merge && edit.points.size() != 2)
-            throw Error(FABVDB_ERR_BAD_INPUT, what + ": a merge needs exactly two points");
-        if (item.contains("closed")) {
-            if (!item["closed"].is_boolean()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": \"closed\" is not a boolean");
-            edit.closed = item["closed"];
-        }
-        edits.push_back(std::move(edit));
-    }
+    for (size_t i = 0; i < document["edits"].size(); ++i)
+        edits.push_back(parse_edit(document["edits"][i], path + ": edit " + std::to_string(i + 1)));
     return edits;
+}
+
+void check_edit(const Edit& edit, const std::string& what) {
+    const char* type = edit_type_name(edit.type);
+    if (edit.points.empty()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": no \"points\"");
+    for (const Vec3& p : edit.points)
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throw Error(FABVDB_ERR_BAD_INPUT, what + ": a point is not finite");
+    if ((edit.type == Edit::no_cut || edit.type == Edit::smooth) && !(edit.radius > 0 && std::isfinite(edit.radius)))
+        throw Error(FABVDB_ERR_BAD_INPUT, what + ": a " + type + " stroke needs \"radius\" > 0");
+    if (edit.type == Edit::cut && edit.points.size() < 2)
+        throw Error(FABVDB_ERR_BAD_INPUT, what + ": a cut needs at least two points");
+    if (edit.type == Edit::merge && edit.points.size() != 2)
+        throw Error(FABVDB_ERR_BAD_INPUT, what + ": a merge needs exactly two points");
+}
+
+const char* edit_type_name(Edit::Type type) {
+    switch (type) {
+        case Edit::no_cut: return "no_cut";
+        case Edit::cut: return "cut";
+        case Edit::merge: return "merge";
+        case Edit::smooth: return "smooth";
+    }
+    return "unknown";
+}
+
+nlohmann::json edits_document(const std::vector<Edit>& edits) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Edit& edit : edits) {
+        nlohmann::json item = {{"type", edit_type_name(edit.type)}, {"points", edit.points}};
+        if (edit.type == Edit::no_cut || edit.type == Edit::smooth) item["radius"] = edit.radius;
+        if (edit.type == Edit::cut) item["closed"] = edit.closed;
+        list.push_back(std::move(item));
+    }
+    return {{"edits", std::move(list)}};
 }
 
 nlohmann::json apply_edit(Shell& shell, MoldabilityTerms& terms, const DecompositionOptions& options,

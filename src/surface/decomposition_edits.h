@@ -38,6 +38,21 @@ struct Edit {
 //! file, the edit and the defect if it is malformed.
 std::vector<Edit> read_edits(const std::string& path);
 
+//! One edit object of the document; throws Error(BAD_INPUT) naming `what`
+//! and the defect if it is malformed.
+Edit parse_edit(const nlohmann::json& item, const std::string& what);
+
+//! Throws Error(BAD_INPUT) naming `what` and the defect if `edit` is
+//! malformed: no points, a point not finite, a no_cut or smooth stroke
+//! without radius > 0, a cut of fewer than two points, a merge not of two.
+void check_edit(const Edit& edit, const std::string& what);
+
+//! The edits as the document read_edits reads (`{"edits": [...]}`).
+nlohmann::json edits_document(const std::vector<Edit>& edits);
+
+//! The edit type's name in the document ("no_cut", "cut", "merge", "smooth").
+const char* edit_type_name(Edit::Type type);
+
 //! Applies `edit` (number `index` in the file, for messages); returns a record
 //! {type, parts_touched, parts_after, seconds, total_moldability_energy}.
 //! A smooth edit moves S_low vertices, so it updates `shell` and `terms`.

@@ -59,10 +59,10 @@ std::vector<std::vector<uint32_t>> chain_edges(const std::vector<Edge>& edges) {
     return chains;
 }
 
-nlohmann::json polylines(const Shell& shell, const std::vector<Edge>& edges) {
-    nlohmann::json lines = nlohmann::json::array();
+std::vector<std::vector<Vec3>> polylines(const Shell& shell, const std::vector<Edge>& edges) {
+    std::vector<std::vector<Vec3>> lines;
     for (const auto& chain : chain_edges(edges)) {
-        nlohmann::json line = nlohmann::json::array();
+        std::vector<Vec3> line;
         for (uint32_t id : chain) line.push_back(corner_position(shell, id));
         lines.push_back(std::move(line));
     }
@@ -119,15 +119,6 @@ void write_colour_ply(const std::string& path, const std::vector<Vec3>& vertices
     if (!out) throw Error(FABVDB_ERR_IO, path + ": write failed");
 }
 
-//! Per S_low triangle: whether its outer face is in M⁺ of its part.
-std::vector<char> outer_upper(const Shell& shell, const Decomposition& decomposition) {
-    std::vector<char> upper(shell.triangle_count(), 1);
-    for (const PartMolding& part : decomposition.parts)
-        for (size_t i = 0; i < part.surface.size(); ++i)
-            if (part.surface.kind[i] == PartSurface::outer) upper[part.surface.source[i]] = part.upper[i];
-    return upper;
-}
-
 void write_parts_ply(const std::string& path, const Mesh& input, const Shell& shell,
                      const Decomposition& decomposition) {
     using K = CGAL::Simple_cartesian<double>;
@@ -156,21 +147,58 @@ void write_parts_ply(const std::string& path, const Mesh& input, const Shell& sh
 
 void write_deformation_ply(const std::string& path, const Shell& shell, const MoldabilityTerms& terms,
                            const Decomposition& decomposition, const DecompositionOptions& options) {
-    std::vector<double> share(shell.triangle_count(), 0.0);
-    for (const PartMolding& part : decomposition.parts)
-        moldability_energy(terms, part.surface, part.upper, part.direction, options.weights, &share);
-    std::vector<float> density(shell.triangle_count());
-    double highest = 0;
-    for (size_t t = 0; t < share.size(); ++t) {
-        density[t] = float(share[t] / std::max(shell.area[t], 1e-30));
-        highest = std::max(highest, double(density[t]));
-    }
-    std::vector<std::array<uint8_t, 3>> colours(share.size());
-    for (size_t t = 0; t < share.size(); ++t) colours[t] = heat_colour(highest > 0 ? density[t] / highest : 0.0);
+    const std::vector<float> density = deformation_density(shell, terms, decomposition, options);
+    const double highest = density.empty() ? 0.0 : double(*std::max_element(density.begin(), density.end()));
+    std::vector<std::array<uint8_t, 3>> colours(density.size());
+    for (size_t t = 0; t < density.size(); ++t) colours[t] = heat_colour(highest > 0 ? density[t] / highest : 0.0);
     write_colour_ply(path, shell.outer.vertices, shell.outer.triangles, colours, &density);
 }
 
 }  // namespace
+
+std::vector<char> outer_upper(const Shell& shell, const Decomposition& decomposition) {
+    std::vector<char> upper(shell.triangle_count(), 1);
+    for (const PartMolding& part : decomposition.parts)
+        for (size_t i = 0; i < part.surface.size(); ++i)
+            if (part.surface.kind[i] == PartSurface::outer) upper[part.surface.source[i]] = part.upper[i];
+    return upper;
+}
+
+std::vector<float> deformation_density(const Shell& shell, const MoldabilityTerms& terms,
+                                       const Decomposition& decomposition, const DecompositionOptions& options) {
+    std::vector<double> share(shell.triangle_count(), 0.0);
+    for (const PartMolding& part : decomposition.parts)
+        moldability_energy(terms, part.surface, part.upper, part.direction, options.weights, &share);
+    std::vector<float> density(shell.triangle_count());
+    for (size_t t = 0; t < share.size(); ++t) density[t] = float(share[t] / std::max(shell.area[t], 1e-30));
+    return density;
+}
+
+PartLines part_lines(const Shell& shell, const Decomposition& decomposition, size_t p) {
+    const PartMolding& part = decomposition.parts[p];
+    const PartSurface& s = part.surface;
+    // Parting line: edges between an M⁺ and an M⁻ triangle; part boundary:
+    // the outer edges of the prisms whose neighbour is in another part.
+    std::map<Edge, int> edge_labels;  // bit 1: M⁺ side seen, bit 2: M⁻ side seen
+    for (size_t i = 0; i < s.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const Edge e = std::minmax(s.corners[i][k], s.corners[i][(k + 1) % 3]);
+            edge_labels[e] |= part.upper[i] ? 1 : 2;
+        }
+    std::vector<Edge> parting, boundary;
+    for (const auto& [e, seen] : edge_labels)
+        if (seen == 3) parting.push_back(e);
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s.kind[i] != PartSurface::outer) continue;
+        const uint32_t t = s.source[i];
+        for (int k = 0; k < 3; ++k)
+            if (decomposition.part_of_triangle[shell.neighbor[t][k]] != int(p)) {
+                const Triangle& f = shell.outer.triangles[t];
+                boundary.push_back(std::minmax(f[k], f[(k + 1) % 3]));
+            }
+    }
+    return {polylines(shell, parting), polylines(shell, boundary)};
+}
 
 nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms& terms,
                                       const Decomposition& decomposition, const DecompositionOptions& options) {
@@ -205,23 +233,7 @@ nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms
                 area_unit += s.area[i];
             }
         area = area_unit / (shell.unit_scale * shell.unit_scale);
-        // Parting line: edges between an M⁺ and an M⁻ triangle; part boundary:
-        // the outer edges of the prisms whose neighbour is in another part.
-        std::map<Edge, int> edge_labels;  // bit 1: M⁺ side seen, bit 2: M⁻ side seen
-        for (size_t i = 0; i < s.size(); ++i)
-            for (int k = 0; k < 3; ++k) {
-                const Edge e = std::minmax(s.corners[i][k], s.corners[i][(k + 1) % 3]);
-                edge_labels[e] |= part.upper[i] ? 1 : 2;
-            }
-        std::vector<Edge> parting, boundary;
-        for (const auto& [e, seen] : edge_labels)
-            if (seen == 3) parting.push_back(e);
-        for (uint32_t t : prisms)
-            for (int k = 0; k < 3; ++k)
-                if (decomposition.part_of_triangle[shell.neighbor[t][k]] != int(p)) {
-                    const Triangle& f = shell.outer.triangles[t];
-                    boundary.push_back(std::minmax(f[k], f[(k + 1) % 3]));
-                }
+        const PartLines lines = part_lines(shell, decomposition, p);
         std::vector<int> kinds(s.kind.begin(), s.kind.end());
         std::vector<int> upper(part.upper.begin(), part.upper.end());
         parts.push_back({{"id", p},
@@ -237,8 +249,8 @@ nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms
                            {"kind", kinds},
                            {"kind_names", {"outer", "inner", "side"}},
                            {"upper", upper}}},
-                         {"parting_lines", polylines(shell, parting)},
-                         {"boundaries", polylines(shell, boundary)}});
+                         {"parting_lines", lines.parting},
+                         {"boundaries", lines.boundaries}});
     }
     doc["parts"] = std::move(parts);
     return doc;

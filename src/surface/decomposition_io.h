@@ -15,12 +15,31 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "surface/coarse_decomposition.h"
 
 namespace fabvdb::surface {
+
+//! The parting lines (edges between M⁺ and M⁻ triangles of the part's
+//! closed surface) and the part boundaries (outer edges of its prisms whose
+//! neighbour is in another part) of part `p`, chained into polylines (world
+//! mm; a closed loop repeats its first point).
+struct PartLines {
+    std::vector<std::vector<Vec3>> parting;
+    std::vector<std::vector<Vec3>> boundaries;
+};
+PartLines part_lines(const Shell& shell, const Decomposition& decomposition, size_t p);
+
+//! Per S_low triangle: whether its outer face is in M⁺ of its part.
+std::vector<char> outer_upper(const Shell& shell, const Decomposition& decomposition);
+
+//! Per S_low triangle: the estimated deformation (§3.5), its share of the
+//! weighted moldability energy per unit-cube area.
+std::vector<float> deformation_density(const Shell& shell, const MoldabilityTerms& terms,
+                                       const Decomposition& decomposition, const DecompositionOptions& options);
 
 //! The decomposition.json document.
 nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms& terms,

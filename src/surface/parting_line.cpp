@@ -225,11 +225,15 @@ std::vector<int> ranked_candidates(const Shell& shell, const MoldabilityTerms& t
     std::vector<char> in_part(shell.triangle_count(), 0);
     for (size_t i = 0; i < surface.size(); ++i)
         if (surface.kind[i] == PartSurface::outer) in_part[surface.source[i]] = 1;
-    std::vector<std::pair<double, int>> estimate;
-    for (size_t d = 0; d < terms.directions.directions.size(); ++d) {
+    // One direction per axis, each estimated independently (in parallel).
+    std::vector<int> axis_directions;
+    for (size_t d = 0; d < terms.directions.directions.size(); ++d)
+        if (terms.axes[terms.axis_of_direction[d]] == terms.directions.directions[d]) axis_directions.push_back(int(d));
+    std::vector<std::pair<double, int>> estimate(axis_directions.size());
+    tbb::parallel_for(size_t(0), axis_directions.size(), [&](size_t a) {
+        const int d = axis_directions[a];
         const int axis = terms.axis_of_direction[d];
         const Vec3& dir = terms.directions.directions[d];
-        if (!(terms.axes[axis] == dir)) continue;
         double e = 0;
         // The lesser overhang is zero unless the triangle is within the draft
         // angle of parallel to the axis (|n·d| < sin φ).
@@ -245,8 +249,8 @@ std::vector<int> ranked_candidates(const Shell& shell, const MoldabilityTerms& t
             for (uint32_t k = o.offset[t]; k < o.offset[t + 1]; ++k)
                 if (in_part[o.partner[k]]) e += 0.5 * o.area[k];
         }
-        estimate.emplace_back(e, int(d));
-    }
+        estimate[a] = {e, d};
+    });
     count = std::min(count, estimate.size());
     std::partial_sort(estimate.begin(), estimate.begin() + count, estimate.end());
     std::vector<int> ranked;
@@ -271,17 +275,26 @@ PartMolding best_parting_line(const Shell& shell, const MoldabilityTerms& terms,
         const int d = terms.directions.directions[hint] == axis ? hint : terms.directions.opposite[hint];
         if (std::find(candidates.begin(), candidates.end(), d) == candidates.end()) candidates.push_back(d);
     }
-    std::vector<double> energy(candidates.size(), 1e300);
+    // Each candidate's labelling is kept, so the best one is not computed twice.
+    std::vector<std::pair<std::vector<char>, MoldabilityEnergy>> labelled(candidates.size());
     tbb::enumerable_thread_specific<std::unique_ptr<CutNetwork>> networks;
     tbb::parallel_for(size_t(0), candidates.size(), [&](size_t c) {
+        labelled[c].second.total = 1e300;
         if (progress.cancelled()) return;
         auto& network = networks.local();
         if (!network) network = std::make_unique<CutNetwork>(surface);
-        energy[c] = label_part(shell, terms, surface, *network, candidates[c], weights).second.total;
+        labelled[c] = label_part(shell, terms, surface, *network, candidates[c], weights);
     });
     progress.check();
-    const int best = candidates[size_t(std::min_element(energy.begin(), energy.end()) - energy.begin())];
-    return molding_of(shell, terms, std::move(surface), best, weights);
+    size_t best = 0;
+    for (size_t c = 1; c < candidates.size(); ++c)
+        if (labelled[c].second.total < labelled[best].second.total) best = c;
+    PartMolding molding;
+    molding.direction = candidates[best];
+    molding.upper = std::move(labelled[best].first);
+    molding.energy = labelled[best].second;
+    molding.surface = std::move(surface);
+    return molding;
 }
 
 }  // namespace fabvdb::surface
