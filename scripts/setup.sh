@@ -12,6 +12,7 @@ packages=(
   lib3mf-dev libzip-dev libcairo2-dev libembree-dev nlohmann-json3-dev libgtest-dev
   slurmctld slurmd slurm-client munge procps
   python3 time
+  libcivetweb-dev chromium
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -20,6 +21,13 @@ echo "== installing dependencies (apt-get)"
 export DEBIAN_FRONTEND=noninteractive
 as_root apt-get update -qq
 as_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+# The studio's page and its browser tests use npm packages (studio/package-lock.json).
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  as_root apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
+fi
+
+echo "== installing the studio's npm packages (npm ci in studio/)"
+(cd studio && npm ci --no-audit --no-fund --loglevel=error)
 
 echo "== building fabvdb in build/"
 launcher=()

@@ -12,6 +12,7 @@ extern const cli_command cmd_repair;
 extern const cli_command cmd_batch;
 extern const cli_command cmd_drain;
 extern const cli_command cmd_powder_sim;
+extern const cli_command cmd_studio;
 
 /* The command called `name`, or NULL (tools/fabvdb.c). */
 const cli_command* command_named(const char* name);

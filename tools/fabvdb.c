@@ -14,6 +14,7 @@ static const cli_command* const commands[] = {
     &cmd_powder_sim,
     &cmd_decompose,
     &cmd_mold,
+    &cmd_studio,
     &cmd_batch,
 };
 static const size_t command_count = sizeof(commands) / sizeof(commands[0]);

@@ -1,0 +1,213 @@
+// viewer.js — the 3-D view: S_low as a flat-shaded mesh with one colour per
+// triangle (non-indexed, so triangle t owns vertices 3t..3t+2), the parting
+// lines and part boundaries as line overlays, the brush cursor and stroke
+// highlight, click markers of a cut, and the mold pieces. Picking and brush
+// queries go through a three-mesh-bvh tree (refitted when S_low moves).
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/OrbitControls.js';
+import { acceleratedRaycast, computeBoundsTree, disposeBoundsTree } from 'three-mesh-bvh';
+
+THREE.Mesh.prototype.raycast = acceleratedRaycast;
+THREE.BufferGeometry.prototype.computeBoundsTree = computeBoundsTree;
+THREE.BufferGeometry.prototype.disposeBoundsTree = disposeBoundsTree;
+
+export class Viewer {
+  constructor(container) {
+    this.container = container;
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(window.devicePixelRatio);
+    container.appendChild(this.renderer.domElement);
+    this.scene = new THREE.Scene();
+    this.scene.background = new THREE.Color(0xf4f4f2);
+    this.camera = new THREE.PerspectiveCamera(40, 1, 0.1, 1e5);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.addEventListener('change', () => this.render());
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 1.6));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.4);
+    sun.position.set(1, 2, 3);
+    this.camera.add(sun);
+    this.scene.add(this.camera);
+    this.model = null;
+    this.lines = new THREE.Group();
+    this.scene.add(this.lines);
+    this.overlay = new THREE.Group();
+    this.scene.add(this.overlay);
+    this.pieces = new THREE.Group();
+    this.pieces.visible = false;
+    this.scene.add(this.pieces);
+    this.cursor = new THREE.Mesh(new THREE.RingGeometry(0.92, 1, 48),
+                                 new THREE.MeshBasicMaterial({ color: 0x111111, side: THREE.DoubleSide, depthTest: false }));
+    this.cursor.visible = false;
+    this.cursor.renderOrder = 10;
+    this.scene.add(this.cursor);
+    this.raycaster = new THREE.Raycaster();
+    this.raycaster.firstHitOnly = true;
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+  }
+
+  resize() {
+    const w = this.container.clientWidth || 1, h = this.container.clientHeight || 1;
+    this.renderer.setSize(w, h);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.render();
+  }
+
+  render() { this.renderer.render(this.scene, this.camera); }
+
+  // S_low from the server: positions (3 per vertex), triangles (3 per triangle).
+  setMesh(positions, triangles) {
+    const nt = triangles.length / 3;
+    const flat = new Float32Array(9 * nt);
+    for (let t = 0; t < nt; ++t)
+      for (let k = 0; k < 3; ++k) {
+        const v = triangles[3 * t + k];
+        flat.set(positions.subarray(3 * v, 3 * v + 3), 9 * t + 3 * k);
+      }
+    const first = !this.model;
+    if (first) {
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', new THREE.BufferAttribute(flat, 3));
+      geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(9 * nt).fill(0.8), 3));
+      geometry.computeVertexNormals();
+      geometry.computeBoundsTree();
+      this.model = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({
+        vertexColors: true, flatShading: true, roughness: 0.75, metalness: 0.0,
+        polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+      this.scene.add(this.model);
+      this.triangleCount = nt;
+      this.positions = positions.slice();
+      this.triangles = triangles.slice();
+      this.frame();
+    } else {
+      const attribute = this.model.geometry.getAttribute('position');
+      attribute.array.set(flat);
+      attribute.needsUpdate = true;
+      this.model.geometry.computeVertexNormals();
+      this.model.geometry.boundsTree.refit();
+      this.positions = positions.slice();
+    }
+    this.render();
+  }
+
+  frame() {
+    const box = new THREE.Box3().setFromObject(this.model);
+    const center = box.getCenter(new THREE.Vector3());
+    this.size = box.getSize(new THREE.Vector3()).length();
+    this.controls.target.copy(center);
+    this.camera.position.copy(center).add(new THREE.Vector3(0.55, -0.75, 0.45).multiplyScalar(1.5 * this.size));
+    this.camera.up.set(0, 0, 1);
+    this.camera.near = this.size / 1000;
+    this.camera.far = this.size * 100;
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+  }
+
+  // colors: Float32Array of 3 per triangle.
+  setColors(colors) {
+    const attribute = this.model.geometry.getAttribute('color');
+    const array = attribute.array;
+    for (let t = 0; t < this.triangleCount; ++t)
+      for (let k = 0; k < 3; ++k) array.set(colors.subarray(3 * t, 3 * t + 3), 9 * t + 3 * k);
+    attribute.needsUpdate = true;
+  }
+
+  // lines: [{part, points: [x,y,z,...]}]; style: {color, width}.
+  setLines(parting, boundaries, visible) {
+    this.lines.clear();
+    const add = (list, color) => {
+      const segments = [];
+      for (const line of list)
+        for (let i = 0; i + 5 < line.points.length; i += 3) segments.push(...line.points.slice(i, i + 6));
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', new THREE.Float32BufferAttribute(segments, 3));
+      this.lines.add(new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color })));
+    };
+    add(boundaries, 0x111111);
+    add(parting, 0xffffff);
+    this.lines.visible = visible;
+  }
+
+  // The triangle and point under a pointer event, or null.
+  pick(event) {
+    if (!this.model) return null;
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const ndc = new THREE.Vector2(((event.clientX - rect.left) / rect.width) * 2 - 1,
+                                  -((event.clientY - rect.top) / rect.height) * 2 + 1);
+    this.raycaster.setFromCamera(ndc, this.camera);
+    const hit = this.raycaster.intersectObject(this.model)[0];
+    if (!hit) return null;
+    const index = this.model.geometry.index;
+    const triangle = index ? Math.floor(index.getX(3 * hit.faceIndex) / 3) : hit.faceIndex;
+    return { point: hit.point.clone(), normal: hit.face.normal.clone(), triangle };
+  }
+
+  centroid(t) {
+    const p = this.model.geometry.getAttribute('position').array;
+    return [0, 1, 2].map((k) => (p[9 * t + k] + p[9 * t + 3 + k] + p[9 * t + 6 + k]) / 3);
+  }
+
+  // Triangles with a corner within radius of point (BVH shapecast).
+  trianglesNear(point, radius) {
+    const sphere = new THREE.Sphere(point, radius);
+    const found = [];
+    const index = this.model.geometry.index;
+    this.model.geometry.boundsTree.shapecast({
+      intersectsBounds: (box) => sphere.intersectsBox(box),
+      intersectsTriangle: (tri, i) => {
+        if (sphere.containsPoint(tri.a) || sphere.containsPoint(tri.b) || sphere.containsPoint(tri.c))
+          found.push(index ? Math.floor(index.getX(3 * i) / 3) : i);
+        return false;
+      },
+    });
+    return found;
+  }
+
+  showCursor(hit, radius) {
+    if (!hit) { this.cursor.visible = false; return; }
+    this.cursor.visible = true;
+    this.cursor.position.copy(hit.point);
+    this.cursor.scale.setScalar(radius);
+    this.cursor.lookAt(hit.point.clone().add(hit.normal));
+  }
+
+  // Markers and a polyline through the cut's points.
+  setOverlay(points, closed) {
+    this.overlay.clear();
+    if (!points.length) { this.render(); return; }
+    const r = this.size / 250;
+    for (const p of points) {
+      const dot = new THREE.Mesh(new THREE.SphereGeometry(r, 12, 8), new THREE.MeshBasicMaterial({ color: 0xd01818, depthTest: false }));
+      dot.position.copy(p);
+      dot.renderOrder = 11;
+      this.overlay.add(dot);
+    }
+    const path = closed && points.length > 2 ? [...points, points[0]] : points;
+    const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(path),
+                                new THREE.LineBasicMaterial({ color: 0xd01818, depthTest: false }));
+    line.renderOrder = 11;
+    this.overlay.add(line);
+    this.render();
+  }
+
+  // A mold piece: role 0 part, 1 top mold, 2 bottom mold; pulled apart along d.
+  addPiece(piece, direction, color) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(piece.positions.slice(), 3));
+    geometry.setIndex(new THREE.BufferAttribute(piece.triangles.slice(), 1));
+    geometry.computeVertexNormals();
+    const material = new THREE.MeshStandardMaterial({
+      color: new THREE.Color(...color), roughness: 0.6,
+      transparent: piece.role !== 0, opacity: piece.role === 0 ? 1 : 0.45, side: THREE.DoubleSide });
+    const mesh = new THREE.Mesh(geometry, material);
+    const offset = (piece.role === 1 ? 1 : piece.role === 2 ? -1 : 0) * 0.35 * this.size;
+    mesh.position.set(direction[0] * offset, direction[1] * offset, direction[2] * offset);
+    this.pieces.add(mesh);
+  }
+
+  clearPieces() {
+    for (const mesh of this.pieces.children) mesh.geometry.dispose();
+    this.pieces.clear();
+  }
+}
