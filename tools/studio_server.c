@@ -700,9 +700,12 @@ studio_server* studio_start(const studio_config* config) {
     mg_init_library(0);
     struct mg_callbacks callbacks;
     memset(&callbacks, 0, sizeof callbacks);
-    s->web = mg_start(&callbacks, s, options);
+    char why[256] = "";
+    struct mg_init_data init = {&callbacks, s, options};
+    struct mg_error_data error = {0, why, sizeof why};
+    s->web = mg_start2(&init, &error);
     if (!s->web) {
-        fprintf(stderr, "fabvdb studio: cannot listen on %s (port in use?)\n", listening);
+        fprintf(stderr, "fabvdb studio: cannot serve on %s: %s\n", listening, why);
         free(s);
         return NULL;
     }
