@@ -5,6 +5,7 @@
 #define _DEFAULT_SOURCE /* POSIX: sigaction, nanosleep */
 #include <signal.h>
 #include <stdio.h>
+#include <sys/stat.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -54,6 +55,20 @@ static void open_browser(const char* url) {
     }
 }
 
+/* Whether Save can write into `output`: an existing folder, or a new one in
+ * an existing folder (checked before the server starts, not at the first Save). */
+static int output_usable(const char* output) {
+    struct stat info;
+    if (stat(output, &info) == 0) return S_ISDIR(info.st_mode);
+    char parent[4096];
+    snprintf(parent, sizeof parent, "%s", output);
+    char* slash = strrchr(parent, '/');
+    if (!slash) return 1;
+    if (slash == parent) slash[1] = '\0';
+    else *slash = '\0';
+    return stat(parent, &info) == 0 && S_ISDIR(info.st_mode);
+}
+
 static int run_studio(cli_run* run) {
     fabvdb_decompose_options decompose;
     fabvdb_decompose_options_init(&decompose);
@@ -87,6 +102,11 @@ static int run_studio(cli_run* run) {
         const char* dot = strrchr(name, '.');
         const int length = dot && dot != name ? (int)(dot - name) : (int)strlen(name);
         snprintf(output, sizeof output, "%.*s-studio", length, name);
+    }
+
+    if (!output_usable(output)) {
+        fprintf(stderr, "fabvdb studio: cannot save into %s: its folder does not exist\n", output);
+        return CLI_EXIT_BAD_INPUT;
     }
 
     fabvdb_mesh* mesh = NULL;
