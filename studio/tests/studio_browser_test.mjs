@@ -7,7 +7,9 @@
 // passes the independent checks (CHECKER), its edit list replayed by
 // `fabvdb decompose --edits` gives the same labels, a bad message (oversized,
 // malformed edit, an edit that does not apply) is refused and leaves the
-// session as it was; a screenshot is written to WORK_DIR/browser/studio.png.
+// session as it was; Make molds shows its progress and Cancel stops it with an
+// error in the page and the session as it was; the draft map arrives for a
+// part's direction; a screenshot is written to WORK_DIR/browser/studio.png.
 // Usage: node studio_browser_test.mjs FABVDB SHARED_DATA CHECKER WORK_DIR
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -32,7 +34,8 @@ const browser = await chromium.launch({
 });
 try {
   const url = await studio.url;
-  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  // bypassCSP: playwright's waitForFunction with an argument evaluates a string, which the page's CSP forbids.
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, bypassCSP: true });
   const pageErrors = [];
   page.on('pageerror', (e) => pageErrors.push(String(e)));
   await page.goto(url);
@@ -68,7 +71,7 @@ try {
     const tangent = new V(1, 0, 0).cross(n).lengthSq() > 0.1 ? new V(1, 0, 0).cross(n).normalize() : new V(0, 1, 0).cross(n).normalize();
     const [x, y] = screen(P);
     const [x2, y2] = screen(P.clone().addScaledVector(tangent, 1));
-    return { x, y, pxPerMm: Math.hypot(x2 - x, y2 - y) };
+    return { x, y, pxPerMm: Math.hypot(x2 - x, y2 - y), n: [n.x, n.y, n.z] };
   }, point);
   const pickAt = (x, y) => page.evaluate(([cx, cy]) => {
     const hit = studio.viewer.pick({ clientX: cx, clientY: cy });
@@ -134,22 +137,78 @@ try {
     return { centre: best, depth: bestD, parts: s.parts.length };
   });
   const around = await aim(deep.centre);
-  const loop = 0.4 * deep.depth * around.pxPerMm;
-  await page.keyboard.press('c');
-  for (let i = 0; i < 10; ++i) {
-    const a = (2 * Math.PI * i) / 10;
-    await page.mouse.click(around.x + loop * Math.cos(a), around.y + loop * Math.sin(a));
+  // Points on the tangent plane at the centre, and where they are on the screen.
+  const unit = (x) => { const l = Math.hypot(...x); return x.map((q) => q / l); };
+  const cross = (x, y) => [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]];
+  const u = unit(cross(around.n, Math.abs(around.n[0]) < 0.9 ? [1, 0, 0] : [0, 1, 0]));
+  const w = cross(around.n, u);
+  // The surface point nearest the tangent-plane point at radius r and angle a round the centre
+  // (the centroid of the nearest S_low triangle).
+  const onSurface = (r, a) => page.evaluate((p) => {
+    let best = null, bestD = Infinity;
+    for (let t = 0; t < studio.labels.length; ++t) {
+      const c = studio.viewer.centroid(t);
+      const d = Math.hypot(c[0] - p[0], c[1] - p[1], c[2] - p[2]);
+      if (d < bestD) { bestD = d; best = c; }
+    }
+    return best;
+  }, deep.centre.map((c, k) => c + r * (Math.cos(a) * u[k] + Math.sin(a) * w[k])));
+  const project = (points) => page.evaluate((pts) => {
+    const v = studio.viewer;
+    const V = v.camera.position.constructor;
+    const rect = v.renderer.domElement.getBoundingClientRect();
+    return pts.map((p) => {
+      const q = new V(...p).project(v.camera);
+      return [rect.left + (q.x + 1) / 2 * rect.width, rect.top + (1 - q.y) / 2 * rect.height];
+    });
+  }, points);
+  const largest = await page.evaluate(() => [...studio.state.parts].sort((a, b) => b.triangles - a.triangles)[0].id);
+  // `at` when a click there lands on the surface within `tolerance` of `intended` and in the
+  // largest part; else null.
+  const landing = async (at, intended, tolerance) => {
+    const hit = await pickAt(...at);
+    if (!hit || dist(hit.point, intended) > tolerance) return null;
+    const label = await page.evaluate((t) => studio.labels[t], hit.triangle);
+    return label === largest ? at : null;
+  };
+  // The largest ring (up to 0.4 of the depth) of 10 surface points whose clicks all land where
+  // meant, and a click outside it, still in the part, for the merge.
+  let ring = null, outside = null;
+  for (const k of [0.4, 0.3, 0.22, 0.16, 0.12, 0.08]) {
+    const r = k * deep.depth;
+    const points = [];
+    for (let i = 0; i < 10; ++i) points.push(await onSurface(r, (2 * Math.PI * i) / 10));
+    const screen = await project(points);
+    const landed = [];
+    for (let i = 0; i < 10; ++i) landed.push(await landing(screen[i], points[i], 0.2 * r));
+    if (landed.some((x) => !x)) continue;
+    outside = null;
+    for (let i = 0; i < 8 && !outside; ++i) {
+      const p = await onSurface(1.8 * r, (2 * Math.PI * i) / 8);
+      outside = await landing((await project([p]))[0], p, 0.2 * r);
+    }
+    if (!outside) continue;
+    ring = screen;
+    break;
   }
+  assert.ok(ring, 'no ring of clicks around the patch lands on the part');
+  await page.keyboard.press('c');
+  for (const [x, y] of ring) await page.mouse.click(x, y);
+  assert.equal(await page.evaluate(() => studio.tools.cutPoints.length), 10, 'a click of the cut missed the surface');
   await page.keyboard.press('Shift+Enter');
   await waitEdits(2);
   const afterCut = await page.evaluate(() => studio.state.parts.length);
   assert.equal(afterCut, deep.parts + 1, 'the closed cut did not split off one part');
-  step(`a closed cut of 10 clicked points splits off a patch (${deep.parts} -> ${afterCut} parts)`);
+  const patch = await page.evaluate(([x, y]) => studio.labels[studio.viewer.pick({ clientX: x, clientY: y }).triangle],
+                                    [around.x, around.y]);
+  const patchSize = await page.evaluate((p) => studio.state.parts[p].triangles, patch);
+  assert.ok(patchSize < 0.5 * first.triangles, 'the cut-off patch is not the small piece inside the ring');
+  step(`a closed cut of 10 clicked points splits off a patch of ${patchSize} triangles (${deep.parts} -> ${afterCut} parts)`);
 
   // 3. Merge: click the patch, then the part around it.
   await page.keyboard.press('m');
   await page.mouse.click(around.x, around.y);
-  await page.mouse.click(around.x + 0.75 * deep.depth * around.pxPerMm, around.y);
+  await page.mouse.click(...outside);
   await waitEdits(3);
   assert.equal(await page.evaluate(() => studio.state.parts.length), deep.parts);
   step('merging the patch with the part around it by two clicks');
@@ -216,7 +275,20 @@ try {
   assert.deepEqual(replayed.part_of_triangle, ours.part_of_triangle);
   step('fabvdb decompose --edits replays the saved edit list to the same parts');
 
-  // 7. The draft map for a part's direction, and a screenshot.
+  // 7. Make molds, cancelled once its progress shows: an error in the page, the session as it was.
+  await page.click('#mold');
+  await page.waitForFunction(() => document.getElementById('progress-stage').textContent !== '', null, { timeout: 120000 });
+  const stage = await page.evaluate(() => document.getElementById('progress-stage').textContent);
+  await page.click('#cancel');
+  await page.waitForFunction(() => !studio.busy, null, { timeout: 120000 });
+  const cancelled = await page.evaluate(() => ({ error: studio.errors[studio.errors.length - 1], molded: studio.molded,
+                                                 labels: Array.from(studio.labels) }));
+  assert.equal(cancelled.molded, null);
+  assert.match(cancelled.error, /^mold: .*cancel/i);
+  assert.deepEqual(cancelled.labels, before.labels);
+  step(`Make molds shows its progress (${stage}) and Cancel stops it: ${cancelled.error}`);
+
+  // 8. The draft map for a part's direction, and a screenshot.
   await page.check('input[value=draft]');
   await page.waitForFunction(() => studio.draft && studio.draft.length === studio.labels.length, null, { timeout: 60000 });
   await page.check('input[value=parts]');
