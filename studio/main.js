@@ -2,7 +2,7 @@
 // decomposition (S_low, labels, sides, deformation, state), colours the view
 // by parts / deformation / draft map, fills the panel, routes the tools'
 // edits and the keyboard shortcuts, and measures each edit's latency from the
-// stroke's end to the recoloured parts (performance.now). window.studio
+// stroke's end to the recoloured parts drawn (performance.now). window.studio
 // exposes the state for the browser tests.
 import { Connection } from './connection.js';
 import { Viewer } from './viewer.js';
@@ -89,6 +89,7 @@ class Studio {
       this.viewer.render();
       this.fillPanel();
       if (request) {
+        this.viewer.waitDrawn();
         const pageMs = performance.now() - request.started;
         if (request.op === 'edit' || request.op === 'undo' || request.op === 'redo') {
           const record = { op: request.op, page_ms: pageMs, server_ms: m.server_ms, library_ms: m.library_ms };
@@ -229,7 +230,7 @@ class Studio {
       if (p.id === this.selectedPart) row.className = 'selected';
       row.innerHTML = `<td><span class="swatch" style="background:${cssColor(partColor(p.id))}"></span></td>` +
         `<td>${p.id}</td><td>${p.direction.map((x) => x.toFixed(2)).join(' ')}</td>` +
-        `<td>${p.energy.toPrecision(3)}</td><td>${p.area.toFixed(0)}</td>`;
+        `<td>${p.energy.toPrecision(3)}</td><td>${p.area.toPrecision(3)}</td>`;
       row.addEventListener('click', () => {
         this.selectedPart = p.id;
         this.fillPanel();
@@ -272,6 +273,8 @@ class Studio {
       this.receivingPieces = false;
       this.setBusy(true);
       $('progress').hidden = false;
+      $('progress-stage').textContent = '';
+      $('progress-fill').style.width = '0';
       this.send('mold');
     });
     $('cancel').addEventListener('click', () => this.connection.send('cancel'));

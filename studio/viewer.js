@@ -14,7 +14,9 @@ THREE.BufferGeometry.prototype.disposeBoundsTree = disposeBoundsTree;
 export class Viewer {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    // No multisampling: with WebGL on the CPU (SwiftShader) it doubles the
+    // time of a frame; the part boundaries are drawn as lines anyway.
+    this.renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(window.devicePixelRatio);
     container.appendChild(this.renderer.domElement);
     this.scene = new THREE.Scene();
@@ -42,6 +44,7 @@ export class Viewer {
     this.scene.add(this.cursor);
     this.raycaster = new THREE.Raycaster();
     this.raycaster.firstHitOnly = true;
+    this.pixel = new Uint8Array(4);
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
   }
@@ -55,6 +58,13 @@ export class Viewer {
   }
 
   render() { this.renderer.render(this.scene, this.camera); }
+
+  // Returns once the frame rendered last is drawn (a one-pixel read-back), so
+  // that an edit's latency includes the drawing, not only its submission.
+  waitDrawn() {
+    const gl = this.renderer.getContext();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, this.pixel);
+  }
 
   // S_low from the server: positions (3 per vertex), triangles (3 per triangle).
   setMesh(positions, triangles) {
@@ -96,7 +106,7 @@ export class Viewer {
     const center = box.getCenter(new THREE.Vector3());
     this.size = box.getSize(new THREE.Vector3()).length();
     this.controls.target.copy(center);
-    this.camera.position.copy(center).add(new THREE.Vector3(0.55, -0.75, 0.45).multiplyScalar(1.5 * this.size));
+    this.camera.position.copy(center).add(new THREE.Vector3(0.55, -0.75, 0.45).multiplyScalar(1.1 * this.size));
     this.camera.up.set(0, 0, 1);
     this.camera.near = this.size / 1000;
     this.camera.far = this.size * 100;

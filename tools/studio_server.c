@@ -43,6 +43,7 @@ struct studio_server {
     pthread_t worker;
     int worker_started;
     int failed;
+    int stopping; /* studio_stop has begun: a cancelled decomposition is not reported */
     fabvdb_status failure;
     char failure_message[1024];
     double* sent_vertices; /* S_low as last sent, to send it again only when it moved */
@@ -402,7 +403,7 @@ static void* work(void* argument) {
             s->failure = status;
             snprintf(s->failure_message, sizeof s->failure_message, "%s: %s", fabvdb_status_string(status),
                      fabvdb_last_error(s->config.ctx));
-            if (!s->config.quiet) fprintf(stderr, "fabvdb studio: %s\n", s->failure_message);
+            if (!s->config.quiet && !s->stopping) fprintf(stderr, "fabvdb studio: %s\n", s->failure_message);
         }
         pthread_mutex_unlock(&s->lock);
     } else if (job == JOB_RERUN) {
@@ -750,6 +751,9 @@ int studio_failed(const studio_server* server, fabvdb_status* status) {
 
 void studio_stop(studio_server* s) {
     if (!s) return;
+    pthread_mutex_lock(&s->lock);
+    s->stopping = 1;
+    pthread_mutex_unlock(&s->lock);
     fabvdb_ctx_cancel(s->config.ctx);
     pthread_mutex_lock(&s->lock);
     const int joined = s->worker_started;
