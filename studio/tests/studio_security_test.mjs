@@ -2,7 +2,8 @@
 // running `fabvdb studio`, tried with plain HTTP from node: requests without
 // the token, with a wrong token, with a foreign Host, a WebSocket handshake
 // with a foreign Origin or none, and a POST, are all refused; the page with
-// the token is served. The server is stopped by its PID and must exit 0.
+// the token is served under a Content-Security-Policy that allows only its
+// own origin. The server is stopped by its PID and must exit 0.
 // Usage: node studio_security_test.mjs FABVDB SHARED_DATA CHECKER WORK_DIR
 import assert from 'node:assert/strict';
 import http from 'node:http';
@@ -20,7 +21,7 @@ function request(url, { method = 'GET', headers = {} } = {}) {
     const req = http.request({ host: u.hostname, port: u.port, path: u.pathname + u.search, method, headers }, (res) => {
       let body = '';
       res.on('data', (d) => { body += d; });
-      res.on('end', () => resolve({ status: res.statusCode, body }));
+      res.on('end', () => resolve({ status: res.statusCode, body, headers: res.headers }));
     });
     req.on('upgrade', (res, socket) => { socket.destroy(); resolve({ status: res.statusCode, body: '' }); });
     // A refused handshake may be a closed connection rather than a status: 0.
@@ -47,6 +48,12 @@ try {
     const r = await request(url);
     assert.equal(r.status, 200);
     assert.match(r.body, /fabvdb studio/);
+    // Scripts and connections only from this origin; no eval; no framing by another page.
+    const csp = r.headers['content-security-policy'];
+    assert.match(csp, /default-src 'self'/);
+    assert.match(csp, /connect-src 'self' ws:\/\/127\.0\.0\.1:\d+ ws:\/\/localhost:\d+;/);
+    assert.match(csp, /frame-ancestors 'none'/);
+    assert.doesNotMatch(csp, /unsafe-eval/);
     assert.equal((await request(`${url}vendor/three.module.js`)).status, 200);
   });
   await check('no token: 403', async () => assert.equal((await request(`${origin}/`)).status, 403));
