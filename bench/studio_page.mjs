@@ -28,7 +28,8 @@ try {
     const out = mkdtempSync(`${tmpdir()}/studio-bench-`);
     const studio = startStudio(`${build}/fabvdb`, `${shared}${file}`, out, []);
     try {
-      const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+      // bypassCSP: playwright's waitForFunction evaluates a string, which the page's CSP forbids.
+      const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, bypassCSP: true });
       await page.goto(await studio.url);
       await page.waitForFunction(() => window.studio?.state && window.studio.viewer.model, null, { timeout: 900000 });
       const result = await page.evaluate(async (repeat) => {
