@@ -179,15 +179,21 @@ PartLines part_lines(const Shell& shell, const Decomposition& decomposition, siz
     const PartSurface& s = part.surface;
     // Parting line: edges between an M⁺ and an M⁻ triangle; part boundary:
     // the outer edges of the prisms whose neighbour is in another part.
-    std::map<Edge, int> edge_labels;  // bit 1: M⁺ side seen, bit 2: M⁻ side seen
+    // Every face edge with its side (1: M⁺, 2: M⁻), sorted by edge: an edge
+    // seen from both sides is on the parting line (a sort, not a map: the
+    // studio asks for the lines after every edit).
+    std::vector<std::pair<Edge, char>> sides;
+    sides.reserve(3 * s.size());
     for (size_t i = 0; i < s.size(); ++i)
-        for (int k = 0; k < 3; ++k) {
-            const Edge e = std::minmax(s.corners[i][k], s.corners[i][(k + 1) % 3]);
-            edge_labels[e] |= part.upper[i] ? 1 : 2;
-        }
+        for (int k = 0; k < 3; ++k)
+            sides.emplace_back(std::minmax(s.corners[i][k], s.corners[i][(k + 1) % 3]), part.upper[i] ? 1 : 2);
+    std::sort(sides.begin(), sides.end());
     std::vector<Edge> parting, boundary;
-    for (const auto& [e, seen] : edge_labels)
-        if (seen == 3) parting.push_back(e);
+    for (size_t i = 0, j = 0; i < sides.size(); i = j) {
+        int seen = 0;
+        for (j = i; j < sides.size() && sides[j].first == sides[i].first; ++j) seen |= sides[j].second;
+        if (seen == 3) parting.push_back(sides[i].first);
+    }
     for (size_t i = 0; i < s.size(); ++i) {
         if (s.kind[i] != PartSurface::outer) continue;
         const uint32_t t = s.source[i];
