@@ -13,6 +13,7 @@ packages=(
   slurmctld slurmd slurm-client munge procps
   python3 time
   libcivetweb-dev chromium
+  groff-base man-db  # the man page: rendered by the reference test, read by `man` after install
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

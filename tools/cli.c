@@ -121,7 +121,7 @@ int cli_parse_value(cli_option_type type, const char* text, double* number, int*
     return 0;
 }
 
-static const char* type_hint(cli_option_type type) {
+const char* cli_type_hint(cli_option_type type) {
     switch (type) {
         case CLI_LENGTH: return "a length such as 3mm, 0.3cm, 0.1in or 2% (of the bounding-box diagonal)";
         case CLI_ANGLE: return "an angle such as 35deg or 0.6rad";
@@ -133,6 +133,16 @@ static const char* type_hint(cli_option_type type) {
 }
 
 /* --- messages and exit codes -------------------------------------------- */
+
+const cli_exit_doc cli_exit_docs[] = {
+    {CLI_EXIT_OK, "done"},
+    {CLI_EXIT_USAGE, "usage error: unknown option, bad or out-of-range value, missing argument"},
+    {CLI_EXIT_BAD_INPUT, "bad input: a file is missing, unreadable or malformed (the message names the file and the defect)"},
+    {CLI_EXIT_BUDGET, "resource budget exceeded (--max-memory; the message proposes what fits)"},
+    {CLI_EXIT_INTERNAL, "internal error (a bug: please report it with the input)"},
+    {CLI_EXIT_CANCELLED, "cancelled (Ctrl-C, SIGTERM); no output is left behind"},
+};
+const size_t cli_exit_doc_count = sizeof(cli_exit_docs) / sizeof(cli_exit_docs[0]);
 
 int cli_exit_code(fabvdb_status status) {
     switch (status) {
@@ -344,26 +354,8 @@ void cli_print_command_help(const cli_command* command) {
     for (size_t i = 0; i < command->option_count; ++i) print_option_help(stdout, &command->options[i]);
     printf("\nCommon options:\n");
     for (size_t i = 0; i < cli_common_option_count; ++i) print_option_help(stdout, &cli_common_options[i]);
-    printf("\nExit codes: 0 done, 1 usage error, 2 bad input, 3 memory budget exceeded, 4 internal error, "
-           "130 cancelled.\n");
-}
-
-static void print_markdown_option(const cli_option* option) {
-    printf("| `%s%s%s` | %s | %s |\n", option->name, option->value_name ? " " : "",
-           option->value_name ? option->value_name : "", option->help,
-           option->default_text ? option->default_text : "");
-}
-
-void cli_print_markdown(const cli_command* const* commands, size_t count) {
-    printf("| command | what it does |\n|---|---|\n");
-    for (size_t i = 0; i < count; ++i)
-        printf("| `fabvdb %s %s` | %s |\n", commands[i]->name, commands[i]->usage, commands[i]->summary);
-    for (size_t i = 0; i < count; ++i) {
-        printf("\n#### `fabvdb %s`\n\n| option | meaning | default |\n|---|---|---|\n", commands[i]->name);
-        for (size_t k = 0; k < commands[i]->option_count; ++k) print_markdown_option(&commands[i]->options[k]);
-    }
-    printf("\n#### Options of every command\n\n| option | meaning | default |\n|---|---|---|\n");
-    for (size_t k = 0; k < cli_common_option_count; ++k) print_markdown_option(&cli_common_options[k]);
+    printf("\nExit codes:\n");
+    for (size_t i = 0; i < cli_exit_doc_count; ++i) printf("  %-4d %s\n", cli_exit_docs[i].code, cli_exit_docs[i].meaning);
 }
 
 /* --- parsing and running ------------------------------------------------ */
@@ -377,7 +369,7 @@ static int set_value(cli_run* run, int index, const char* text, int given) {
         return 0;
     }
     if (cli_parse_value(option->type, text, &value->number, &value->relative) != 0)
-        return cli_usage_error(run, "%s takes %s, not '%s'", option->name, type_hint(option->type), text);
+        return cli_usage_error(run, "%s takes %s, not '%s'", option->name, cli_type_hint(option->type), text);
     value->text = text;
     value->set = 1;
     value->given = given;

@@ -2,7 +2,7 @@
  * declares its options once in a table (name, type, default, help), from which
  * parsing, `--help` and the README's command table come. Values with units
  * (lengths, angles, sizes) are parsed here; exit codes are mapped here, in one
- * place (README "Exit codes"). Uses only the public header fabvdb.h. */
+ * place (cli_exit_docs, printed into docs/README.md and the man page). Uses only the public header fabvdb.h. */
 #ifndef FABVDB_CLI_H
 #define FABVDB_CLI_H
 
@@ -19,6 +19,15 @@ enum {
     CLI_EXIT_INTERNAL = 4,
     CLI_EXIT_CANCELLED = 130
 };
+
+/* What each exit code means: the one table that `--help`, the man page and
+ * docs/README.md print. */
+typedef struct cli_exit_doc {
+    int code;
+    const char* meaning;
+} cli_exit_doc;
+extern const cli_exit_doc cli_exit_docs[];
+extern const size_t cli_exit_doc_count;
 
 typedef enum cli_option_type {
     CLI_FLAG,   /* no value */
@@ -112,6 +121,9 @@ void cli_print_warnings(const cli_run* run, const fabvdb_report* report);
  * than a mesh. */
 int cli_is_level_set_path(const char* path);
 
+/* What a value of this type looks like, e.g. "an angle such as 35deg or
+ * 0.6rad" (usage errors, the reference's units). */
+const char* cli_type_hint(cli_option_type type);
 /* Parses the units of one value; returns 0 on success. */
 int cli_parse_value(cli_option_type type, const char* text, double* number, int* relative);
 
@@ -119,8 +131,6 @@ int cli_parse_value(cli_option_type type, const char* text, double* number, int*
 int cli_main(const cli_command* command, int argc, char** argv);
 /* Prints the help of one command to stdout. */
 void cli_print_command_help(const cli_command* command);
-/* Prints the markdown command/option tables of the README. */
-void cli_print_markdown(const cli_command* const* commands, size_t count);
 
 /* Writes a job file (tools/job.c) holding one command line: `command_name`
  * with argv[1..argc-1], less any --save-job option. Returns 0 on success. */

@@ -23,7 +23,7 @@ static const cli_option options[] = {
     {"--smoothness", 0, CLI_NUMBER, "W", "1", "weight w_l of boundary smoothness against moldability"},
     {"--edits", 0, CLI_STRING, "EDITS.json", NULL,
      "no_cut / cut / merge / smooth edits in world coordinates, applied in order"},
-    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb decompose')"},
+    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/decompose.md)"},
 };
 
 static int run_decompose(cli_run* run) {
@@ -46,13 +46,6 @@ static int run_decompose(cli_run* run) {
             return cli_usage_error(run, "--parts must be auto or a whole number from 1 to 1000");
         options.parts = (int)count;
     }
-    if (!(options.gamma > 0)) return cli_usage_error(run, "--gamma must be positive");
-    if (options.max_parts < 2) return cli_usage_error(run, "--max-parts must be at least 2");
-    if (!(options.draft_degrees >= 0 && options.draft_degrees <= 30))
-        return cli_usage_error(run, "--draft must be between 0 and 30 degrees");
-    if (options.low_res_triangles < 100) return cli_usage_error(run, "--low-res must be at least 100");
-    if (options.smoothing_iterations < 0) return cli_usage_error(run, "--smoothing must be at least 0");
-    if (!(options.w_smooth >= 0)) return cli_usage_error(run, "--smoothness must be at least 0");
 
     fabvdb_mesh* mesh = NULL;
     int code = cli_read_input(run, run->positional[0], &mesh);

@@ -27,7 +27,7 @@ static const cli_option options[] = {
      "heat maps of the cavity: share of the powder that drains, and HEAT_left.ply, the powder left (+ PNG legends)"},
     {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size of the level sets (default: wall / 4)"},
     {"--patches", 0, CLI_INT, "N", "2000", "cavity surface patches of the drainability model"},
-    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb drain')"},
+    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/drain.md)"},
 };
 
 /* A share of the cavity: "1%" or "0.01" (both 0.01); false unless in [0, 1). */
@@ -99,10 +99,6 @@ static int run_drain(cli_run* run) {
     if (!parse_share(cli_get(run, "--target")->text, &drain.target_residual))
         return cli_usage_error(run, "--target takes a percentage (1%) or a fraction (0.01) in [0, 1)");
     drain.patch_count = (int)cli_get(run, "--patches")->number;
-    if (!(drain.repose_degrees > 0.0 && drain.repose_degrees < 90.0))
-        return cli_usage_error(run, "--repose must be between 0 and 90 degrees");
-    if (!(drain.effort >= 0.0 && drain.effort < 1.0)) return cli_usage_error(run, "--effort must be in [0, 1)");
-    if (drain.patch_count < 10) return cli_usage_error(run, "--patches must be at least 10");
     drain.keep_out_path = cli_get(run, "--keep-out")->set ? cli_get(run, "--keep-out")->text : NULL;
     drain.heatmap_path = cli_get(run, "--heatmap")->set ? cli_get(run, "--heatmap")->text : NULL;
 
@@ -122,10 +118,10 @@ static int run_drain(cli_run* run) {
     drain.wall = cli_length_mm(run, "--wall", diagonal);
     drain.hole_diameter = cli_length_mm(run, "--hole-diameter", diagonal);
     if (cli_get(run, "--voxel")->set) drain.voxel_size = cli_length_mm(run, "--voxel", diagonal);
-    if (!(drain.wall > 0.0) || !(drain.hole_diameter > 0.0) || drain.voxel_size < 0.0) {
+    if (cli_get(run, "--voxel")->set && !(drain.voxel_size > 0.0)) {
         fabvdb_mesh_free(mesh);
         free(orientations);
-        return cli_usage_error(run, "--wall, --hole-diameter and --voxel must be positive");
+        return cli_usage_error(run, "--voxel must be positive (leave it out for wall / 4)");
     }
 
     fabvdb_mesh* drilled = NULL;

@@ -20,7 +20,7 @@ static const cli_option options[] = {
     {"--infill", 0, CLI_STRING, "PATTERN", NULL, "fill the cavity with an open-cell lattice joined to the wall: gyroid"},
     {"--cell", 0, CLI_LENGTH, "LEN", "10mm", "infill cell size"},
     {"--strut", 0, CLI_LENGTH, "LEN", "1.2mm", "infill strut diameter (at most cell/4; the automatic voxel is then strut/4)"},
-    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb hollow')"},
+    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/hollow.md)"},
 };
 
 static int run_hollow(cli_run* run) {

@@ -6,7 +6,7 @@
 #include "commands.h"
 
 static const cli_option options[] = {
-    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb info')"},
+    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/info.md)"},
 };
 
 static int number(const cli_run* run, const fabvdb_report* report, const char* pointer, double* out) {

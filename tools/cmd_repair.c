@@ -18,7 +18,7 @@ static const cli_option options[] = {
     {"--no-snap", 0, CLI_FLAG, NULL, NULL, "keep output vertices where the voxels put them (no snapping onto the input)"},
     {"--min-shell-volume", 0, CLI_NUMBER, "MM3", "0", "drop solid shells under this volume in mm^3 (0 keeps all)"},
     {"--thicken", 0, CLI_LENGTH, "LEN", NULL, "turn an input that encloses no volume (an open sheet) into a sheet this thick"},
-    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: README 'fabvdb repair')"},
+    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/repair.md)"},
 };
 
 static int run_repair(cli_run* run) {

@@ -1,10 +1,13 @@
 /* fabvdb.c — entry point of the `fabvdb` command: dispatches to a subcommand
- * (tools/cmd_*.c), and answers `help`, `help COMMAND`, `--help`, `--version`. */
+ * (tools/cmd_*.c), and answers `help`, `help COMMAND`, `--help`, `--version`,
+ * and the generated reference (tools/reference.h): `help --markdown
+ * [COMMAND|--common]` and `help --man`. */
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
 #include "commands.h"
+#include "reference.h"
 
 static const cli_command* const commands[] = {
     &cmd_info,
@@ -32,8 +35,9 @@ static void print_overview(void) {
     for (size_t i = 0; i < command_count; ++i) printf("  %-12s %s\n", commands[i]->name, commands[i]->summary);
     printf("\n'fabvdb help COMMAND' (or 'fabvdb COMMAND --help') explains a command and its options.\n"
            "Lengths take units: 3mm, 0.3cm, 0.1in, or 2%% of the model's bounding-box diagonal.\n"
-           "Exit codes: 0 done, 1 usage error, 2 bad input, 3 memory budget exceeded, 4 internal error,\n"
-           "130 cancelled. Outputs appear only when complete.\n");
+           "Outputs appear only when complete. The full reference: 'man fabvdb' and docs/ in the sources.\n"
+           "\nExit codes:\n");
+    for (size_t i = 0; i < cli_exit_doc_count; ++i) printf("  %-4d %s\n", cli_exit_docs[i].code, cli_exit_docs[i].meaning);
 }
 
 int main(int argc, char** argv) {
@@ -51,8 +55,21 @@ int main(int argc, char** argv) {
             print_overview();
             return CLI_EXIT_OK;
         }
-        if (strcmp(argv[2], "--markdown") == 0) {
-            cli_print_markdown(commands, command_count);
+        if (strcmp(argv[2], "--man") == 0 && argc == 3) {
+            reference_man_page(commands, command_count);
+            return CLI_EXIT_OK;
+        }
+        if (strcmp(argv[2], "--markdown") == 0 && argc <= 4) {
+            if (argc == 3) {
+                reference_markdown_commands(commands, command_count);
+            } else if (strcmp(argv[3], "--common") == 0) {
+                reference_markdown_common();
+            } else if (command_named(argv[3])) {
+                reference_markdown_command(command_named(argv[3]));
+            } else {
+                fprintf(stderr, "fabvdb: no command '%s' (see 'fabvdb help')\n", argv[3]);
+                return CLI_EXIT_USAGE;
+            }
             return CLI_EXIT_OK;
         }
         const cli_command* command = command_named(argv[2]);

@@ -1,6 +1,7 @@
 # install_test.sh — `cmake --install` gives a usable package: a program outside
 # the tree builds and runs against it through find_package(fabvdb) and through
-# pkg-config, and the installed `fabvdb` command runs.
+# pkg-config, the installed `fabvdb` command runs, and `man fabvdb` finds its
+# installed man page.
 source "$(dirname "$0")/lib.sh"
 BUILD="$(dirname "$FABVDB")"
 PREFIX="$WORK/prefix"
@@ -19,4 +20,8 @@ flags="$STDOUT"
 expect_exit 0 cc "$SOURCE/tests/install/consumer.c" -o "$WORK/consumer_pc" $flags
 expect_exit 0 env LD_LIBRARY_PATH="$libdir" "$WORK/consumer_pc"
 expect_exit 0 "$PREFIX/bin/fabvdb" --version
+expect_exit 0 test -f "$PREFIX/share/man/man1/fabvdb.1"
+expect_exit 0 env MANPATH="$PREFIX/share/man" MANWIDTH=100 man -P cat fabvdb
+expect_match "$STDOUT" 'fabvdb drain'
+expect_match "$STDOUT" 'EXIT STATUS'
 finish
