@@ -98,10 +98,10 @@ int main(int argc, char** argv) {
                                 std::chrono::steady_clock::now().time_since_epoch())
                                 .count()) -
                      wall_start));
-        const double per_direction = double(r.report["seconds"]["precompute_per_direction"]) * 1000 * share;
+        const double per_direction = double(r.report["timings"]["precompute_per_direction"]) * 1000 * share;
         const nlohmann::json& last = r.report["attempts"].back();
-        const double per_iteration = double(last["seconds_per_iteration"]) * 1000 * share;
-        const double smoothing_ms = double(r.report["seconds"]["smoothing"]) * 1000 * share;
+        const double per_iteration = double(last["timings"]["per_iteration"]) * 1000 * share;
+        const double smoothing_ms = double(r.report["timings"]["smoothing"]) * 1000 * share;
         const nlohmann::json& smoothness = r.report["smoothing"]["smoothness"];
         // Cut: a closed loop around the middle of part 0; merge it back.
         Shell& shell = r.shell;

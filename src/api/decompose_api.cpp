@@ -5,6 +5,7 @@
 
 #include "api/decompose_settings.h"
 #include "api/guard.h"
+#include "api/options.h"
 #include "surface/decompose.h"
 #include "surface/decomposition_io.h"
 
@@ -18,18 +19,8 @@ void require_range(bool ok, const char* message) {
 
 }  // namespace
 
-const fabvdb_decompose_options& decompose_options_or_defaults(const fabvdb_decompose_options* options,
-                                                    fabvdb_decompose_options& defaults) {
-    fabvdb_decompose_options_init(&defaults);
-    if (!options) return defaults;
-    if (options->struct_size < sizeof(fabvdb_decompose_options))
-        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT,
-                            "options: struct_size is not set (call fabvdb_decompose_options_init)");
-    return *options;
-}
-
 fabvdb::surface::DecomposeSettings decompose_settings(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
-                                                const fabvdb_decompose_options& o) {
+                                                      const fabvdb_decompose_options& o) {
     require_range(std::isfinite(o.shell_thickness) && o.shell_thickness >= 0, "shell_thickness must be >= 0");
     require_range(std::isfinite(o.gamma) && o.gamma > 0, "gamma must be > 0");
     require_range(o.parts >= 0, "parts must be >= 0");
@@ -86,8 +77,8 @@ fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, co
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out_dir, "out_dir");
-        fabvdb_decompose_options defaults;
-        const fabvdb_decompose_options& options = fabvdb::api::decompose_options_or_defaults(opts, defaults);
+        const fabvdb_decompose_options options =
+            fabvdb::api::options_from(opts, fabvdb_decompose_options_init, "fabvdb_decompose_options");
         const fabvdb::surface::DecomposeSettings settings = fabvdb::api::decompose_settings(ctx, mesh->mesh, options);
         const std::vector<fabvdb::surface::Edit> edits =
             edits_path ? fabvdb::surface::read_edits(edits_path) : std::vector<fabvdb::surface::Edit>{};

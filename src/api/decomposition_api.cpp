@@ -10,6 +10,7 @@
 
 #include "api/decompose_settings.h"
 #include "api/guard.h"
+#include "api/options.h"
 #include "core/atomic_output.h"
 #include "surface/decomposition_io.h"
 #include "surface/decomposition_session.h"
@@ -134,8 +135,8 @@ fabvdb_status fabvdb_decomposition_new(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out, "out");
-        fabvdb_decompose_options defaults;
-        const fabvdb_decompose_options& options = fabvdb::api::decompose_options_or_defaults(opts, defaults);
+        const fabvdb_decompose_options options =
+            fabvdb::api::options_from(opts, fabvdb_decompose_options_init, "fabvdb_decompose_options");
         const fabvdb::surface::DecomposeSettings settings = fabvdb::api::decompose_settings(ctx, mesh->mesh, options);
         fabvdb::Progress progress = ctx->make_progress();
         const auto start = std::chrono::steady_clock::now();

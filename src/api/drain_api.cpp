@@ -1,12 +1,15 @@
 //! C API: drainability — drain-hole planning and drilling (`fabvdb drain`)
 //! and the reference powder simulation (`fabvdb powder-sim`).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "api/guard.h"
+#include "api/options.h"
 #include "core/colour_bar.h"
 #include "core/mesh.h"
+#include "core/stage_clock.h"
 #include "powder/cleaning_routine.h"
 #include "powder/drain_part.h"
 #include "powder/heatmap_ply.h"
@@ -31,6 +34,13 @@ std::vector<fabvdb::Vec3> orientation_list(const double* values, size_t count) {
         list.push_back({g[0] / length, g[1] / length, g[2] / length});
     }
     return list;
+}
+
+//! Throws Error(INVALID_ARGUMENT) with `message` unless `ok`: the one place
+//! the ranges of the drain and powder options are checked (the CLI maps the
+//! status to exit code 1).
+void require_range(bool ok, const char* message) {
+    if (!ok) throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, message);
 }
 
 nlohmann::json vec_json(const fabvdb::Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
@@ -90,11 +100,6 @@ std::vector<fabvdb::powder::SandpileHole> parse_holes(const char* text) {
         ++index;
     }
     return holes;
-}
-
-void check_struct_size(size_t given, size_t needed, const char* name) {
-    if (given < needed)
-        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, std::string(name) + ".struct_size is too small (call its _init())");
 }
 
 //! The gravities of a routine to replay: a drain report's routine[] of
@@ -218,18 +223,16 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out_mesh, "out_mesh");
-        fabvdb_drain_options o;
-        fabvdb_drain_options_init(&o);
-        if (options) {
-            check_struct_size(options->struct_size, sizeof(fabvdb_drain_options), "fabvdb_drain_options");
-            o = *options;
-        }
-        if (!(o.hole_diameter > 0.0) || !(o.repose_degrees > 0.0 && o.repose_degrees < 90.0) ||
-            !(o.effort >= 0.0 && o.effort < 1.0) || o.hole_count < 0 || o.patch_count < 1 ||
-            !(o.target_residual >= 0.0) || !(o.voxel_size >= 0.0))
-            throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT,
-                                "drain options out of range (hole diameter > 0, 0 < repose < 90, 0 <= effort < 1, "
-                                "hole count >= 0, patch count >= 1, target >= 0, voxel size >= 0)");
+        const fabvdb_drain_options o =
+            fabvdb::api::options_from(options, fabvdb_drain_options_init, "fabvdb_drain_options");
+        require_range(std::isfinite(o.wall) && o.wall > 0.0, "wall must be > 0 mm");
+        require_range(std::isfinite(o.hole_diameter) && o.hole_diameter > 0.0, "hole_diameter must be > 0 mm");
+        require_range(o.repose_degrees > 0.0 && o.repose_degrees < 90.0, "repose_degrees must be in (0, 90)");
+        require_range(o.effort >= 0.0 && o.effort < 1.0, "effort must be in [0, 1)");
+        require_range(o.hole_count >= 0, "hole_count must be >= 0 (0: automatic)");
+        require_range(o.patch_count >= 10, "patch_count must be >= 10");
+        require_range(o.target_residual >= 0.0 && o.target_residual < 1.0, "target_residual must be in [0, 1)");
+        require_range(std::isfinite(o.voxel_size) && o.voxel_size >= 0.0, "voxel_size must be >= 0 mm (0: wall / 4)");
         fabvdb::Progress progress = ctx->make_progress();
         fabvdb::powder::DrainPartOptions part_options;
         part_options.wall = o.wall;
@@ -248,19 +251,26 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
             part_options.plan.keep_out = fabvdb::powder::read_keep_out(
                 o.keep_out_path, o.voxel_size > 0 ? o.voxel_size : o.wall / 4.0, progress);
         fabvdb::powder::DrainPartResult result = fabvdb::powder::drain_part(mesh->mesh, part_options, progress);
+        const auto timings_with_total = [&result] {
+            nlohmann::json timings = result.timings;
+            double total = 0.0;
+            for (const auto& [name, seconds] : result.timings) total += seconds;
+            timings["total"] = total;
+            return timings;
+        };
         if (!result.has_cavity) {
             nlohmann::json report = {{"holes", nlohmann::json::array()},
                                      {"predicted_residual_fraction", 0.0},
-                                     {"predicted_residual_mm3", 0.0},
+                                     {"predicted_residual_volume", 0.0},
                                      {"baseline_holes", nlohmann::json::array()},
                                      {"baseline_residual_fraction", 0.0},
-                                     {"baseline_residual_mm3", 0.0},
-                                     {"cavity_volume_mm3", 0.0},
+                                     {"baseline_residual_volume", 0.0},
+                                     {"cavity_volume", 0.0},
                                      {"cavities", 0},
                                      {"cavity_count", 0},
                                      {"input_was_hollow", result.input_was_hollow},
                                      {"voxel_size", result.voxel_size},
-                                     {"timings", result.timings},
+                                     {"timings", timings_with_total()},
                                      {"warnings", result.warnings}};
             if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(report));
             *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
@@ -269,28 +279,28 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         const auto& plan = result.plan;
         nlohmann::json heatmap;
         if (o.heatmap_path) {
-            const auto start = std::chrono::steady_clock::now();
+            fabvdb::StageClock clock(result.timings);
             heatmap = write_heat_maps(plan, o.heatmap_path);
-            result.timings["heat map"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            clock.lap("heat map");
         }
         nlohmann::json report;
         report["holes"] = holes_json(plan.holes);
         report["predicted_residual_fraction"] = plan.evaluation.residual_fraction();
-        report["predicted_residual_mm3"] = plan.evaluation.residual_volume;
+        report["predicted_residual_volume"] = plan.evaluation.residual_volume;
         report["routine"] = routine_json(plan);
         report["routine_residual_fraction"] = plan.routine_evaluation.residual_fraction();
-        report["routine_residual_mm3"] = plan.routine_evaluation.residual_volume;
+        report["routine_residual_volume"] = plan.routine_evaluation.residual_volume;
         report["random_routines"] = spread_json(plan.random_residuals, plan.evaluation.total_volume);
         report["baseline_holes"] = holes_json(plan.baseline);
         report["baseline_routine_residual_fraction"] =
             plan.evaluation.total_volume > 0 ? plan.baseline_routine_residual / plan.evaluation.total_volume : 0.0;
         report["baseline_residual_fraction"] = plan.baseline_evaluation.residual_fraction();
-        report["baseline_residual_mm3"] = plan.baseline_evaluation.residual_volume;
-        report["cavity_volume_mm3"] = plan.evaluation.total_volume;
+        report["baseline_residual_volume"] = plan.baseline_evaluation.residual_volume;
+        report["cavity_volume"] = plan.evaluation.total_volume;
         report["cavities"] = plan.patches.cavity_count;
         report["cavity_count"] = plan.patches.cavity_count;
         report["warnings"] = result.warnings;
-        report["residual_per_cavity_mm3"] = plan.evaluation.residual_per_cavity;
+        report["residual_volume_per_cavity"] = plan.evaluation.residual_per_cavity;
         report["patches"] = plan.patches.size();
         report["candidates"] = plan.candidate_count;
         report["input_was_hollow"] = result.input_was_hollow;
@@ -299,10 +309,7 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         report["effort"] = o.effort;
         report["orientations"] = o.orientations ? o.orientation_count : size_t(162);
         if (o.heatmap_path) report["heatmap"] = heatmap;
-        report["timings"] = result.timings;
-        double total = 0.0;
-        for (const auto& [name, seconds] : result.timings) total += seconds;
-        report["timings"]["total"] = total;
+        report["timings"] = timings_with_total();
         fabvdb_report* report_handle = out_report ? fabvdb::api::new_report_handle(std::move(report)) : nullptr;
         *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
         if (out_report) *out_report = report_handle;
@@ -315,22 +322,17 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
         fabvdb::api::require(part, "part");
         fabvdb::api::require(holes_json_text, "holes_json");
         fabvdb::api::require(out, "out");
-        fabvdb_powder_options o;
-        fabvdb_powder_options_init(&o);
-        if (options) {
-            check_struct_size(options->struct_size, sizeof(fabvdb_powder_options), "fabvdb_powder_options");
-            o = *options;
-        }
-        if (!(o.repose_degrees > 0.0 && o.repose_degrees < 90.0) || o.turns < 1 || o.slope_window < 1 ||
-            o.slope_window > 16 ||
-            !(o.voxel_size >= 0.0))
-            throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT,
-                                "powder options out of range (0 < repose < 90, turns >= 1, 1 <= slope window <= 16, "
-                                "voxel size >= 0)");
+        const fabvdb_powder_options o =
+            fabvdb::api::options_from(options, fabvdb_powder_options_init, "fabvdb_powder_options");
+        require_range(o.repose_degrees > 0.0 && o.repose_degrees < 90.0, "repose_degrees must be in (0, 90)");
+        require_range(o.turns >= 1, "turns must be >= 1");
+        require_range(o.slope_window >= 1 && o.slope_window <= 16, "slope_window must be in [1, 16]");
+        require_range(std::isfinite(o.voxel_size) && o.voxel_size >= 0.0, "voxel_size must be >= 0 mm (0: automatic)");
         const std::vector<fabvdb::powder::SandpileHole> holes = parse_holes(holes_json_text);
         fabvdb::validate_mesh(part->mesh, "part");
         if (part->mesh.triangles.empty()) throw fabvdb::Error(FABVDB_ERR_BAD_INPUT, "part: no triangles");
-        const auto start = std::chrono::steady_clock::now();
+        std::map<std::string, double> timings;
+        fabvdb::StageClock clock(timings);
         double voxel = o.voxel_size;
         if (voxel == 0.0) {
             voxel = fabvdb::bounding_box(part->mesh).diagonal() / 150.0;
@@ -342,7 +344,7 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
         distance.memory_budget_bytes = ctx->budget_bytes();
         distance.input_name = "part";
         const openvdb::FloatGrid::Ptr solid = fabvdb::volume::signed_distance_from_mesh(part->mesh, distance, progress);
-        const double distance_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        clock.lap("signed distance");
 
         std::vector<fabvdb::Vec3> set = orientation_list(o.orientations, o.orientation_count);
         if (set.empty()) set = fabvdb::thesis_directions().directions;
@@ -355,13 +357,13 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
                                                                              set, o.turns, o.seed);
         const fabvdb::powder::SandpileResult result =
             fabvdb::powder::simulate_sandpile(*solid, holes, sandpile, progress);
-        const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        clock.lap("simulation");
 
         nlohmann::json report;
-        report["initial_mm3"] = result.initial_volume;
-        report["residual_mm3"] = result.residual_volume;
+        report["initial_volume"] = result.initial_volume;
+        report["residual_volume"] = result.residual_volume;
         report["residual_fraction"] = result.residual_fraction();
-        report["residual_after_turn_mm3"] = result.residual_after_turn;
+        report["residual_volume_after_turn"] = result.residual_after_turn;
         nlohmann::json routine = nlohmann::json::array();
         for (const auto& g : sandpile.routine) routine.push_back(vec_json(g));
         report["routine"] = routine;
@@ -370,8 +372,8 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
         else report["seed"] = o.seed;
         report["voxel_size"] = voxel;
         report["holes"] = holes.size();
-        report["timings"] = {{"signed distance", distance_seconds}, {"simulation", total - distance_seconds},
-                             {"total", total}};
+        report["timings"] = timings;
+        report["timings"]["total"] = clock.total();
         *out = fabvdb::api::new_report_handle(std::move(report));
     });
 }

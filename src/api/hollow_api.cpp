@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "api/guard.h"
+#include "api/options.h"
 #include "api/volume_handle.h"
 #include "volume/extract_mesh.h"
 #include "volume/hollow.h"
@@ -15,13 +16,8 @@ using fabvdb::volume::HollowOptions;
 using fabvdb::volume::HollowResult;
 
 HollowOptions core_options(const fabvdb_hollow_options* opts, const fabvdb::Mesh& mesh, fabvdb_ctx* ctx) {
-    fabvdb_hollow_options given;
-    fabvdb_hollow_options_init(&given);
-    if (opts) {
-        if (opts->struct_size < sizeof(size_t) || opts->struct_size > sizeof(fabvdb_hollow_options))
-            throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "hollow options: struct_size is not set by _init");
-        std::memcpy(&given, opts, opts->struct_size);
-    }
+    const fabvdb_hollow_options given =
+        fabvdb::api::options_from(opts, fabvdb_hollow_options_init, "fabvdb_hollow_options");
     HollowOptions options;
     options.wall = given.wall;
     options.closing = given.closing;

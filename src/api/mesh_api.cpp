@@ -1,8 +1,11 @@
 //! C API: mesh handles — creation from arrays, file read/write, accessors and
 //! inspection (`fabvdb info`).
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "api/guard.h"
+#include "core/stage_clock.h"
 #include "io/mesh_io.h"
 #include "surface/inspect.h"
 #include "surface/write_solid_mesh.h"
@@ -102,8 +105,12 @@ fabvdb_status fabvdb_mesh_inspect(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, fabv
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out, "out");
+        std::map<std::string, double> stages;
+        fabvdb::StageClock clock(stages);
         fabvdb::Progress progress = ctx->make_progress();
-        *out = fabvdb::api::new_report_handle(fabvdb::surface::inspect_mesh(mesh->mesh, progress));
+        nlohmann::json report = fabvdb::surface::inspect_mesh(mesh->mesh, progress);
+        report["timings"] = {{"inspect", clock.lap("inspect")}, {"total", clock.total()}};
+        *out = fabvdb::api::new_report_handle(std::move(report));
     });
 }
 

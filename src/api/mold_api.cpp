@@ -4,28 +4,29 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include "api/guard.h"
+#include "api/options.h"
 #include "core/atomic_folder.h"
+#include "core/stage_clock.h"
 #include "surface/decomposition_parts.h"
 #include "surface/mold_generation.h"
 #include "surface/write_solid_mesh.h"
 
 namespace {
 
-const fabvdb_mold_options& options_or_defaults(const fabvdb_mold_options* options, fabvdb_mold_options& defaults) {
-    fabvdb_mold_options_init(&defaults);
-    if (!options) return defaults;
-    if (options->struct_size < sizeof(fabvdb_mold_options))
-        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "options: struct_size is not set (call fabvdb_mold_options_init)");
+fabvdb_mold_options checked_options(const fabvdb_mold_options* given) {
+    const fabvdb_mold_options options = fabvdb::api::options_from(given, fabvdb_mold_options_init, "fabvdb_mold_options");
     const auto require = [](bool ok, const char* message) {
         if (!ok) throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, message);
     };
-    require(std::isfinite(options->margin) && options->margin > 0, "margin must be > 0");
-    require(std::isfinite(options->voxel_size) && options->voxel_size >= 0, "voxel_size must be >= 0");
-    require(std::isfinite(options->grid_step) && options->grid_step >= 0, "grid_step must be >= 0");
-    require(std::isfinite(options->density) && options->density > 0, "density must be > 0");
-    return *options;
+    require(std::isfinite(options.margin) && options.margin > 0, "margin must be > 0");
+    require(std::isfinite(options.voxel_size) && options.voxel_size >= 0, "voxel_size must be >= 0");
+    require(std::isfinite(options.grid_step) && options.grid_step >= 0, "grid_step must be >= 0");
+    require(std::isfinite(options.density) && options.density > 0, "density must be > 0");
+    return options;
 }
 
 std::string numbered(const char* folder, int id, const char* suffix) {
@@ -92,8 +93,9 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out_dir, "out_dir");
-        fabvdb_mold_options defaults;
-        const fabvdb_mold_options& options = options_or_defaults(opts, defaults);
+        const fabvdb_mold_options options = checked_options(opts);
+        std::map<std::string, double> own_stages;
+        fabvdb::StageClock clock(own_stages);
         fabvdb::AtomicFolder folder(out_dir);
         const std::filesystem::path root(folder.temp_path());
         nlohmann::json report;
@@ -115,6 +117,7 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
             fabvdb_report_free(decomposition_report);
             decomposition_file = decomposition_dir + "/decomposition.json";
         }
+        clock.lap("decomposition");
         fabvdb::Progress progress = ctx->make_progress();
         progress.stage("mold: read the decomposition");
         const fabvdb::surface::DecomposedModel model =
@@ -130,6 +133,7 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         const fabvdb::surface::MoldGeneration result =
             fabvdb::surface::generate_molds(mesh->mesh, model, settings, progress);
 
+        clock.lap("generation");
         progress.stage("mold: write");
         std::filesystem::create_directory(root / "parts");
         std::filesystem::create_directory(root / "molds");
@@ -165,7 +169,10 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         }
         report["mean_distance_ratio"] = result.mean_distance / result.diagonal;
         report["hausdorff_ratio"] = result.max_distance / result.diagonal;
-        report["seconds"] = result.seconds;
+        report["timings"] = result.seconds;
+        if (!decomposition_path) report["timings"]["decomposition"] = own_stages["decomposition"];
+        report["timings"]["write"] = clock.lap("write");
+        report["timings"]["total"] = clock.total();
         progress.check();
         folder.commit();
         if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(report));

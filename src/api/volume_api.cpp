@@ -1,17 +1,20 @@
 //! C API: volume handles (level sets) — robust conversion from meshes
 //! (`fabvdb repair`), extraction, .vdb files.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <optional>
+#include <string>
 
 #include <openvdb/io/File.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 
 #include "api/guard.h"
+#include "api/options.h"
 #include "api/volume_handle.h"
 #include "core/atomic_output.h"
+#include "core/stage_clock.h"
 #include "surface/inspect.h"
 #include "surface/mesh_repair.h"
 #include "volume/extract_mesh.h"
@@ -20,13 +23,8 @@
 
 namespace {
 
-const fabvdb_volume_options& options_or_defaults(const fabvdb_volume_options* options,
-                                                 fabvdb_volume_options& defaults) {
-    fabvdb_volume_options_init(&defaults);
-    if (!options) return defaults;
-    if (options->struct_size < sizeof(fabvdb_volume_options))
-        throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "options: struct_size is not set (call fabvdb_volume_options_init)");
-    return *options;
+fabvdb_volume_options options_or_defaults(const fabvdb_volume_options* options) {
+    return fabvdb::api::options_from(options, fabvdb_volume_options_init, "fabvdb_volume_options");
 }
 
 fabvdb::volume::RepairOptions repair_options(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
@@ -51,7 +49,8 @@ fabvdb::volume::RepairOptions repair_options(const fabvdb_ctx* ctx, const fabvdb
     return repair;
 }
 
-nlohmann::json repair_report(const fabvdb::volume::RepairResult& result) {
+//! The report's figures; `timings` gets the stages' seconds and `total`.
+nlohmann::json repair_report(const fabvdb::volume::RepairResult& result, double total_seconds) {
     nlohmann::json report;
     report["voxel_size"] = result.grid->voxelSize()[0];
     report["active_voxels"] = result.distance.active_voxels;
@@ -62,6 +61,7 @@ nlohmann::json repair_report(const fabvdb::volume::RepairResult& result) {
     report["shells_kept"] = result.shells_kept;
     report["shells_dropped"] = result.shells_dropped;
     report["timings"] = result.distance.timings;
+    report["timings"]["total"] = total_seconds;
     return report;
 }
 
@@ -89,13 +89,14 @@ fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, 
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out, "out");
-        fabvdb_volume_options defaults;
-        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, options_or_defaults(options, defaults));
+        std::map<std::string, double> stages;
+        const fabvdb::StageClock clock(stages);
+        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, options_or_defaults(options));
         repair.distance.input_name = mesh->name;
         repair.extract = false;
         fabvdb::Progress progress = ctx->make_progress();
         fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
-        nlohmann::json document = repair_report(result);
+        nlohmann::json document = repair_report(result, clock.total());
         document["volume"] = openvdb::tools::levelSetVolume(*result.grid);
         auto volume = std::make_unique<fabvdb_volume>();
         volume->grid = result.grid;
@@ -109,8 +110,7 @@ fabvdb_status fabvdb_volume_to_mesh(fabvdb_ctx* ctx, const fabvdb_volume* volume
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(volume, "volume");
         fabvdb::api::require(out, "out");
-        fabvdb_volume_options defaults;
-        const fabvdb_volume_options& chosen = options_or_defaults(options, defaults);
+        const fabvdb_volume_options chosen = options_or_defaults(options);
         fabvdb::Progress progress = ctx->make_progress();
         *out = fabvdb::api::new_mesh_handle(fabvdb::volume::extract_mesh(*volume->grid, chosen.adaptivity, progress),
                                             true);
@@ -122,18 +122,19 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out, "out");
-        fabvdb_volume_options defaults;
-        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, options_or_defaults(options, defaults));
+        std::map<std::string, double> stages;
+        fabvdb::StageClock clock(stages);
+        const fabvdb_volume_options chosen = options_or_defaults(options);
+        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, chosen);
         repair.distance.input_name = mesh->name;
-        const fabvdb_volume_options& chosen = options_or_defaults(options, defaults);
         fabvdb::Progress progress = ctx->make_progress();
         nlohmann::json input;
         if (report) input = fabvdb::surface::inspect_mesh(mesh->mesh, progress);
+        const double inspect_seconds = clock.lap("inspect input");
         // Mesh level first, unless asked for voxels or what only voxels do
         // (thicken a sheet, drop small shells).
         const bool volumetric = (chosen.flags & FABVDB_REPAIR_VOLUMETRIC) || repair.distance.thicken > 0.0 ||
                                 repair.min_shell_volume > 0.0;
-        const auto start = std::chrono::steady_clock::now();
         std::optional<fabvdb::surface::MeshRepair> fixed;
         if (!volumetric) fixed = fabvdb::surface::repair_at_mesh_level(mesh->mesh, progress);
         nlohmann::json rest_report;
@@ -141,8 +142,10 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
             // Some shells need voxels: those alone, then united with the others.
             std::optional<fabvdb::Mesh> united;
             try {
+                std::map<std::string, double> rest_stages;
+                const fabvdb::StageClock rest_clock(rest_stages);
                 fabvdb::volume::RepairResult rest = fabvdb::volume::repair(fixed->rest, repair, progress);
-                rest_report = repair_report(rest);
+                rest_report = repair_report(rest, rest_clock.total());
                 united = fabvdb::surface::unite_shells(fixed->mesh, rest.mesh, fixed->fixes, progress);
             } catch (const fabvdb::Error& e) {
                 if (e.status() != FABVDB_ERR_BAD_INPUT) throw;  // the rest alone encloses nothing
@@ -154,6 +157,7 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
                 fixed.reset();
             }
         }
+        const double mesh_level_seconds = volumetric ? 0.0 : clock.lap("mesh level");
         if (fixed) {
             nlohmann::json document;
             document["path"] = fixed->path;
@@ -170,14 +174,16 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
             document["input"] = std::move(input);
             document["output_triangles"] = fixed->mesh.triangles.size();
             document["volume"] = signed_volume(fixed->mesh);
-            document["timings"] = {
-                {"mesh level", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+            document["timings"] = stages;
+            document["timings"]["total"] = clock.total();
             if (report) *report = fabvdb::api::new_report_handle(std::move(document));
             *out = fabvdb::api::new_mesh_handle(std::move(fixed->mesh), true);
             return;
         }
         fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
-        nlohmann::json document = repair_report(result);
+        nlohmann::json document = repair_report(result, clock.total());
+        if (report) document["timings"]["inspect input"] = inspect_seconds;
+        if (!volumetric) document["timings"]["mesh level"] = mesh_level_seconds;
         document["path"] = "volumetric";
         document["mesh_level"] = false;
         document["input"] = std::move(input);

@@ -1,11 +1,11 @@
 //! The drain-hole planning pipeline (see drain_plan.h).
 #include "powder/drain_plan.h"
 
-#include <chrono>
 #include <cmath>
 
 #include "core/error.h"
 #include "core/icosphere.h"
+#include "core/stage_clock.h"
 #include "powder/hole_candidates.h"
 #include "powder/orientation_flows.h"
 #include "powder/powder_drop.h"
@@ -22,20 +22,6 @@ Vec3 unit(const Vec3& v) {
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "an orientation is not a non-zero direction");
     return {v[0] / length, v[1] / length, v[2] / length};
 }
-
-class StageClock {
-public:
-    explicit StageClock(std::map<std::string, double>& timings) : timings_(timings) {}
-    void lap(const std::string& name) {
-        const auto now = std::chrono::steady_clock::now();
-        timings_[name] += std::chrono::duration<double>(now - last_).count();
-        last_ = now;
-    }
-
-private:
-    std::map<std::string, double>& timings_;
-    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 }  // namespace
 

@@ -24,11 +24,8 @@ double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[
 //! the expected residual is solved on.
 constexpr double kLaterSamples = 2500.0;
 constexpr int kPileLevels = 48;
-//! The prediction's operator routines (later turns) and their seed. Ranking
-//! random hole sets against the simulation (Spearman; fertility and
-//! armadillo_29k against 16 simulated routines, bunny against 8): 32
-//! routines 0.96 / 0.93 / 0.78, 64 routines 0.97 / 0.94 / 0.82, 128
-//! routines 0.97 / 0.96 / 0.81.
+//! The prediction's operator routines (later turns) and their seed: 64 rank
+//! hole sets as well as 128 (bench_drain --sets 16; docs/design/drainability.md).
 constexpr size_t kRoutines = 64;
 constexpr uint64_t kRoutineSeed = 2026;
 //! The steps to the 26 cells around a sample, and each sample's sample

@@ -2,63 +2,29 @@
 //! turn orientations, the first (printing) orientation's flow and the
 //! dropped powder, it evaluates a set of drain holes.
 //!
-//! - A hole whose axis is within 90° − θ_r of gravity g passes whatever
-//!   reaches its tunnel (powder slides down it): its crater's slope of
-//!   repose rises from the rim of its mouth. A flatter tunnel (a hole in a
-//!   side wall) holds a slope of repose rising from its outer lip (the
-//!   lowest point of the outer mouth): it passes powder when that slope
-//!   meets the inner mouth below its top, and the crater rises from there.
-//!   Powder drains only if it can reach the mouth without climbing: joined
-//!   to it through powder no higher than itself (sublevel_forest.h, on the
-//!   powder samples' grid). As printed, powder above the crater's cone
-//!   (slope θ_r, straight from the apex) drains. In the later turns powder
-//!   above the surface of repose drains: it rises from the crater with
-//!   slope θ_r along paths through the cavity (steps to the 26 cells
-//!   around each sample, never through a wall's edge or corner) and never
-//!   lies below a floor, so powder held on ledges and in side branches far
-//!   from the hole by its own slope stays (the cone alone let it all go:
-//!   fertility ranked hole sets at Spearman 0.48 against the simulation,
-//!   0.75 with the surface). Powder passes only where the surface leaves
-//!   room above it: a passage the surface fills to its top (a flat tube
-//!   longer than its height / tan θ_r) is plugged, and what lies beyond stays.
-//!   As printed the surface changed no ranking on the five bench models, so
-//!   that turn keeps the cone (cheaper).
-//! - The routine: the part as printed, then T = round(ρ / (1 − ρ)) turns
-//!   (the mean count of the finite-effort chain: the operator turns once
-//!   more with probability ρ) to orientations of the set, equal weights. A
-//!   fixed count, not a geometric one: a geometric count leaves a tenth of
-//!   the powder retained after the first turn in the part (the chance of no
-//!   turn at all), which the reference simulation of an operator's routine
-//!   does not.
-//! - The prediction (evaluate) keeps the powder where it lies between
-//!   turns, save what drains: in each turn, each open hole takes the powder
-//!   above its surface of repose (a sample two holes drain goes to the
-//!   lower), and that powder first fills the empty rim of its crater (the
-//!   samples its surface reaches and buries), lowest first, before leaving.
-//!   The expected residual is the mean over 64 routines drawn once with a
-//!   fixed seed. Measured against the reference simulation (16 random hole
-//!   sets at 80 mm, Spearman): gathering the powder into one pile at the
-//!   bottom after every turn ranked fertility's sets at 0.72 (it refills the
-//!   crater and drains the same powder turn after turn: a shaft behind a
-//!   flat tube, its hole down, keeps 80% by the pile, 98% by the simulation
-//!   and by this model); powder that never moves ranked all five models
-//!   well but left no rim (a hollow sphere with one hole: 0.8% against 3–4%
-//!   simulated); this model ranks fertility 0.97 and keeps the rims.
+//! - What drains: as printed, powder above each open hole's cone of repose;
+//!   in the later turns, powder above the surface of repose rising from the
+//!   crater through the cavity (never below a floor, plugged where it fills
+//!   a passage). Powder must reach the mouth without climbing
+//!   (sublevel_forest.h).
+//! - The routine: as printed, then round(ρ / (1 − ρ)) turns to orientations
+//!   of the set. The prediction (evaluate) keeps the powder in place between
+//!   turns save what drains, refilling crater rims; mean of 64 routines
+//!   drawn with a fixed seed.
 //! - The hole search's objective (drain, residual_with) gathers the powder
-//!   into one pile per cavity instead, which makes adding a hole cheap to
-//!   evaluate: after every turn the powder left fills the lowest part of the
-//!   cavity (by the samples' heights) for the next gravity, and the pile's
-//!   samples that drain leave, so a turn maps the pile's share x to
-//!   F_g(x) ≤ x, and the expected residual share R_T(x), R_0(x) = x,
-//!   R_t(x) = mean_g R_{t−1}(F_g(x)), is computed on a grid of pile shares.
-//! - The heat map comes from the prediction too: per patch, the share of
-//!   the powder resting on it at the start (each powder sample rests on a
-//!   patch) that has left at the end, and the powder left on it. Their
-//!   mean weighted by the powder at the start is the predicted drained
-//!   fraction.
-//! The as-printed turn uses every powder sample; later turns a grid coarser
-//! by a whole stride (a uniform subsample of about 2500). A class because the hole search
-//! evaluates many hole sets on the same flows.
+//!   into one pile per cavity instead, so adding a hole is cheap to
+//!   evaluate: a turn maps the pile's share x to F_g(x) ≤ x, and the
+//!   expected residual share after T random turns is computed on a grid of
+//!   pile shares.
+//! - The heat map comes from the prediction too: per patch, the share of the
+//!   powder resting on it at the start that has left at the end, and the
+//!   powder left on it.
+//! Takes references to the flows and samples (they must outlive it); costs
+//! one sublevel forest per turn to build. The as-printed turn uses every
+//! powder sample, later turns a uniform subsample of about 2500. A class
+//! because the hole search evaluates many hole sets on the same flows. The
+//! derivation and the alternatives measured and rejected are in
+//! docs/design/drainability.md.
 #pragma once
 
 #include <array>

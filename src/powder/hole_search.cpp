@@ -15,12 +15,9 @@ namespace fabvdb::powder {
 
 namespace {
 
-//! The search's objective: the later turns by the crater's cone
-//! (DrainabilityModel::Crater::cone), not the surface of repose the
-//! prediction uses. Measured against the reference simulation (4 routines,
-//! 80 mm): the cone search's holes leave 0.74% on fertility with 8 holes
-//! where the surface search's leave 2.72%, and 0.94% on bunny with 5 where
-//! the surface's leave 0.42%; the surface search took 2.5 to 5 times longer.
+//! The search's objective: the later turns by the crater's cone, not the
+//! surface of repose the prediction uses: better holes on fertility, 2.5 to 5
+//! times faster (bench_drain; docs/design/drainability.md).
 constexpr DrainabilityModel::Crater kCrater = DrainabilityModel::Crater::cone;
 //! Sites near a hole the prediction's polish weighs (bench_drain: cat-low-resolution
 //! at 60 mm has about 60 sites within reach of a hole; weighing all took 18 s).

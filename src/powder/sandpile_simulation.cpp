@@ -166,24 +166,97 @@ bool place_grain(Frame& frame, const Eigen::Vector3d& p, std::vector<size_t>& gr
     return false;
 }
 
+constexpr int kDirections[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
+
+//! How far the ground may drop along each of the 8 directions before a grain
+//! topples. Heights are whole cells: the ground s steps away is too low when
+//! it lies more than s · run · tan θ below, rounded up (a staircase drawn
+//! from a slope of exactly θ stays). The full window sets the angle on open
+//! ground (35°, window 4: 3 cells over 4, 4 over 4√2, that is 36.9° and
+//! 35.3°); shorter distances let grains run down narrow steep tunnels.
+struct ReposeSteps {
+    ReposeSteps(double tan_repose, int window) : window(window) {
+        for (int d = 0; d < 8; ++d)
+            for (int s = 1; s <= window; ++s) {
+                run[d][s] = s * (d < 4 ? 1.0 : std::sqrt(2.0));
+                allowed_drop[d][s] = int(std::ceil(run[d][s] * tan_repose - 1e-9));
+            }
+    }
+    int window;
+    double run[8][kMaxWindow + 1];
+    int allowed_drop[8][kMaxWindow + 1];
+};
+
+//! Lets the grain in cell `i` (height z) fall through free cells; stops on
+//! support or in the outside, which it then has left (the cell stays
+//! outside). Returns whether it moved; `i` and `z` follow it.
+bool fall(std::vector<uint8_t>& cells, size_t& i, int& z) {
+    bool fell = false;
+    while (z > 0 && (cells[i - 1] == kFree || cells[i - 1] == kOutside)) {
+        cells[i] = kFree;
+        --i;
+        --z;
+        fell = true;
+        if (cells[i] == kOutside) break;
+        cells[i] = kGrain;
+    }
+    return fell;
+}
+
+//! The direction (index into kDirections) in which the grain at (x, y, z)
+//! topples: the steepest whose ground lies lower than the repose allows, or
+//! −1. Directions are tried from `start` round, so ties go a different way
+//! for different grains and passes.
+int steepest_topple(const Frame& frame, const std::vector<uint8_t>& cells, const ReposeSteps& steps, int x, int y,
+                    int z, int start) {
+    int best = -1;
+    double best_slope = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const int d = (start + k) & 7;
+        const int dx = kDirections[d][0], dy = kDirections[d][1];
+        // Ground heights along the way, as drops below the grain. The
+        // ground ahead may fall away at most one cell per step: at an
+        // edge (a deeper drop, a bottomless column, the outside) the
+        // grain sees only the edge, so a pit or cliff a few cells away
+        // does not pull a grain resting on flat ground.
+        int previous_drop = 1;  // the grain's own support
+        for (int s = 1; s <= steps.window; ++s) {
+            const int ax = x + s * dx, ay = y + s * dy;
+            if (!frame.inside(ax, ay, z)) break;
+            const uint8_t c = cells[frame.index(ax, ay, z)];
+            if (c != kFree && c != kOutside) break;  // the way is blocked
+            int drop = previous_drop + 1;
+            bool edge = true;
+            if (c == kFree)
+                for (int zz = z - 1; zz >= std::max(0, z - previous_drop - 1); --zz) {
+                    const uint8_t below = cells[frame.index(ax, ay, zz)];
+                    if (below == kOutside) break;
+                    if (below != kFree) {
+                        drop = z - zz;
+                        edge = false;
+                        break;
+                    }
+                }
+            if (drop > steps.allowed_drop[d][s]) {
+                const double slope = drop / steps.run[d][s];
+                if (best < 0 || slope > best_slope) {
+                    best = d;
+                    best_slope = slope;
+                }
+            }
+            if (edge) break;
+            previous_drop = drop;
+        }
+    }
+    return best;
+}
+
 //! Runs falls and topples until the pile rests; returns how many grains left.
 size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose, int window, Progress& progress) {
     auto& cells = frame.cells();
     const auto& n = frame.size();
     const size_t column_stride = size_t(n[2]);
-    const int directions[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
-    // Heights are whole cells: the ground s steps away is too low when it lies
-    // more than s · run · tan θ below, rounded up (a staircase drawn from a
-    // slope of exactly θ stays). The full window sets the angle on open
-    // ground (35°, window 4: 3 cells over 4, 4 over 4√2, that is 36.9° and
-    // 35.3°); shorter distances let grains run down narrow steep tunnels.
-    double run[8][kMaxWindow + 1];
-    int allowed_drop[8][kMaxWindow + 1];
-    for (int d = 0; d < 8; ++d)
-        for (int s = 1; s <= window; ++s) {
-            run[d][s] = s * (d < 4 ? 1.0 : std::sqrt(2.0));
-            allowed_drop[d][s] = int(std::ceil(run[d][s] * tan_repose - 1e-9));
-        }
+    const ReposeSteps steps(tan_repose, window);
     const size_t removed_mark = SIZE_MAX;
     size_t removed = 0;
     // A grain that topples is above lower ground within `window` steps, so it
@@ -196,17 +269,7 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
         for (size_t g = 0; g < grains.size(); ++g) {
             size_t i = grains[g];
             int z = int(i % n[2]), y = int((i / n[2]) % n[1]), x = int(i / (column_stride * n[1]));
-            // Fall.
-            bool fell = false;
-            while (z > 0 && (cells[i - 1] == kFree || cells[i - 1] == kOutside)) {
-                cells[i] = kFree;
-                --i;
-                --z;
-                fell = true;
-                if (cells[i] == kOutside) break;
-                cells[i] = kGrain;
-            }
-            if (fell) {
+            if (fall(cells, i, z)) {
                 ++moved;
                 ++descended;
                 if (cells[i] == kOutside) {
@@ -217,49 +280,9 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
                 grains[g] = i;
                 continue;
             }
-            // Topple toward the steepest direction that exceeds the repose.
-            int best = -1;
-            double best_slope = 0.0;
-            const int start = int((i * 2654435761u + pass) & 7u);
-            for (int k = 0; k < 8; ++k) {
-                const int d = (start + k) & 7;
-                const int dx = directions[d][0], dy = directions[d][1];
-                // Ground heights along the way, as drops below the grain. The
-                // ground ahead may fall away at most one cell per step: at an
-                // edge (a deeper drop, a bottomless column, the outside) the
-                // grain sees only the edge, so a pit or cliff a few cells away
-                // does not pull a grain resting on flat ground.
-                int previous_drop = 1;  // the grain's own support
-                for (int s = 1; s <= window; ++s) {
-                    const int ax = x + s * dx, ay = y + s * dy;
-                    if (!frame.inside(ax, ay, z)) break;
-                    const uint8_t c = cells[frame.index(ax, ay, z)];
-                    if (c != kFree && c != kOutside) break;  // the way is blocked
-                    int drop = previous_drop + 1;
-                    bool edge = true;
-                    if (c == kFree)
-                        for (int zz = z - 1; zz >= std::max(0, z - previous_drop - 1); --zz) {
-                            const uint8_t below = cells[frame.index(ax, ay, zz)];
-                            if (below == kOutside) break;
-                            if (below != kFree) {
-                                drop = z - zz;
-                                edge = false;
-                                break;
-                            }
-                        }
-                    if (drop > allowed_drop[d][s]) {
-                        const double slope = drop / run[d][s];
-                        if (best < 0 || slope > best_slope) {
-                            best = d;
-                            best_slope = slope;
-                        }
-                    }
-                    if (edge) break;
-                    previous_drop = drop;
-                }
-            }
+            const int best = steepest_topple(frame, cells, steps, x, y, z, int((i * 2654435761u + pass) & 7u));
             if (best < 0) continue;
-            const size_t j = frame.index(x + directions[best][0], y + directions[best][1], z);
+            const size_t j = frame.index(x + kDirections[best][0], y + kDirections[best][1], z);
             cells[i] = kFree;
             ++moved;
             if (cells[j] == kOutside) {

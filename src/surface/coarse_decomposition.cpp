@@ -48,9 +48,9 @@ Decomposition coarse_decomposition(const Shell& shell, const MoldabilityTerms& t
                        {"iterations", regions.iterations},
                        {"region_cost_per_iteration", regions.cost_per_iteration},
                        {"moldability_energy", energy},
-                       {"seconds_per_iteration",
-                        std::chrono::duration<double>(grown - start).count() / regions.iterations},
-                       {"parting_line_seconds", std::chrono::duration<double>(cut - grown).count()}});
+                       {"timings",
+                        {{"per_iteration", std::chrono::duration<double>(grown - start).count() / regions.iterations},
+                         {"parting_line", std::chrono::duration<double>(cut - grown).count()}}}});
         if (energy < best_energy) {
             best_energy = energy;
             best = std::move(attempt);

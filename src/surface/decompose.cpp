@@ -4,8 +4,10 @@
 #include "surface/decompose.h"
 
 #include <algorithm>
-#include <chrono>
+#include <map>
+#include <string>
 
+#include "core/stage_clock.h"
 #include "surface/boundary_smoothing.h"
 #include "surface/shell_from_mesh.h"
 
@@ -15,16 +17,10 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
                                Progress& progress) {
     DecomposeResult result;
     nlohmann::json& report = result.report;
-    auto start = std::chrono::steady_clock::now();
-    const auto lap = [&](const char* name) {
-        const auto now = std::chrono::steady_clock::now();
-        report["seconds"][name] = std::chrono::duration<double>(now - start).count();
-        start = now;
-    };
+    std::map<std::string, double> timings;
+    StageClock clock(timings);
     nlohmann::json low_res;
     result.shell = shell_from_mesh(input, settings.shell, progress, &low_res);
-    // A shell that is a thin feature everywhere would be one no-cut region, a
-    // single part however far over gamma: cast it solid instead, so it can be cut.
     const bool all_thin =
         !settings.shell.solid &&
         std::all_of(result.shell.thin_segment.begin(), result.shell.thin_segment.end(), [](int s) { return s >= 0; });
@@ -33,19 +29,17 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
         solid.solid = true;
         result.shell = shell_from_mesh(input, solid, progress, &low_res);
     }
-    lap("precompute_shell");
+    clock.lap("precompute_shell");
     result.terms = compute_moldability_terms(result.shell, settings.draft_radians, progress);
-    lap("precompute_directions");
-    report["seconds"]["precompute_per_direction"] =
-        report["seconds"]["precompute_directions"].get<double>() / double(result.terms.directions.directions.size());
+    clock.lap("precompute_directions");
     report["attempts"] = nlohmann::json::array();
     result.decomposition =
         coarse_decomposition(result.shell, result.terms, settings.decomposition, report["attempts"], progress);
-    lap("coarse_decomposition");
+    clock.lap("coarse_decomposition");
     if (settings.decomposition.smoothing_iterations > 0) progress.stage("boundary smoothing");
     report["smoothing"] = smooth_boundaries(result.shell, result.terms, result.decomposition, settings.decomposition,
                                             nullptr, progress);
-    lap("smoothing");
+    clock.lap("smoothing");
     report["edits"] = nlohmann::json::array();
     if (!edits.empty()) progress.stage("edits");
     for (size_t i = 0; i < edits.size(); ++i) {
@@ -57,7 +51,7 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
         report["edits"].push_back(std::move(record));
         progress.update(double(i + 1) / edits.size());
     }
-    lap("edits");
+    clock.lap("edits");
 
     const Decomposition& d = result.decomposition;
     const double energy = d.total_energy();
@@ -81,6 +75,10 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
                                    {"moldability_energy", d.parts[p].energy.total},
                                    {"area", area / (result.shell.unit_scale * result.shell.unit_scale)}});
     }
+    report["timings"] = timings;
+    report["timings"]["precompute_per_direction"] =
+        timings["precompute_directions"] / double(result.terms.directions.directions.size());
+    report["timings"]["total"] = clock.total();
     report["warnings"] = nlohmann::json::array();
     if (all_thin)
         report["warnings"].push_back("the part is thinner than twice the shell thickness everywhere (one thin "

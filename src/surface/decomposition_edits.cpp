@@ -384,7 +384,7 @@ nlohmann::json apply_edit(Shell& shell, MoldabilityTerms& terms, const Decomposi
     return {{"type", type},
             {"parts_touched", touched},
             {"parts_after", decomposition.parts.size()},
-            {"seconds", seconds},
+            {"timings", {{"total", seconds}}},
             {"total_moldability_energy", decomposition.total_energy()}};
 }
 

@@ -2,10 +2,10 @@
 #include "surface/mold_generation.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "core/error.h"
+#include "core/stage_clock.h"
 #include "surface/float_rounding.h"
 #include "surface/overhang_deformation.h"
 #include "surface/surface_distance.h"
@@ -18,20 +18,6 @@
 namespace fabvdb::surface {
 
 namespace {
-
-class StageClock {
-public:
-    explicit StageClock(std::map<std::string, double>& seconds) : seconds_(seconds) {}
-    void lap(const char* stage) {
-        const auto now = std::chrono::steady_clock::now();
-        seconds_[stage] += std::chrono::duration<double>(now - since_).count();
-        since_ = now;
-    }
-
-private:
-    std::map<std::string, double>& seconds_;
-    std::chrono::steady_clock::time_point since_ = std::chrono::steady_clock::now();
-};
 
 Mesh merged(const std::vector<CastPart>& parts, std::vector<size_t>& part_of_triangle) {
     Mesh all;

@@ -30,7 +30,7 @@ Shell shell_from_mesh(const Mesh& input, const volume::LowResShellOptions& optio
                   {"low_res_vertices", shell.outer.vertices.size()},
                   {"thin_segments", segments},
                   {"thin_triangles", thin_triangles},
-                  {"seconds", low.seconds}};
+                  {"timings", low.seconds}};
     }
     return shell;
 }

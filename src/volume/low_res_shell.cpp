@@ -4,10 +4,10 @@
 #include "volume/low_res_shell.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "core/error.h"
+#include "core/stage_clock.h"
 #include "volume/low_res_surface.h"
 #include "volume/memory_estimate.h"
 #include "volume/shell_prisms.h"
@@ -20,12 +20,7 @@ LowResShell low_res_shell(const Mesh& input, const LowResShellOptions& options, 
     if (!options.solid && !(options.thickness > 0))
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the shell thickness must be > 0");
     LowResShell result;
-    auto start = std::chrono::steady_clock::now();
-    const auto lap = [&](const char* name) {
-        const auto now = std::chrono::steady_clock::now();
-        result.seconds[name] = std::chrono::duration<double>(now - start).count();
-        start = now;
-    };
+    StageClock clock(result.seconds);
     const double area = surface_area(input);
     const BoundingBox box = bounding_box(input);
     const double extent = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
@@ -41,13 +36,13 @@ LowResShell low_res_shell(const Mesh& input, const LowResShellOptions& options, 
     sdf.memory_budget_bytes = options.memory_budget_bytes;
     sdf.input_name = options.input_name;
     const openvdb::FloatGrid::Ptr grid = signed_distance_from_mesh(input, sdf, progress);
-    lap("signed_distance");
+    clock.lap("signed_distance");
     result.outer = low_res_surface(*grid, options.target_triangles, progress);
-    lap("low_res_surface");
+    clock.lap("low_res_surface");
     ShellPrisms prisms = shell_prisms(*grid, result.outer.vertices, result.thickness, max_depth, progress);
     result.inner = std::move(prisms.inner);
     result.depth = std::move(prisms.depth);
-    lap("shell_prisms");
+    clock.lap("shell_prisms");
     return result;
 }
 

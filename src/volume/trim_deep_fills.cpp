@@ -36,54 +36,66 @@ openvdb::FloatGrid::Ptr signed_distance(const openvdb::tools::Dense<float>& bloc
     return distance;
 }
 
-}  // namespace
-
-size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense<float>& filled,
-                       const openvdb::math::Transform& transform, const openvdb::FloatGrid& surface,
-                       float background, double min_depth, const openvdb::FloatGrid* others, Progress& progress) {
-    progress.stage("sweep: fill or trim");
-    const openvdb::CoordBBox box = filled.bbox();
-    const openvdb::Coord dim = box.dim();
-    const int nx = dim.x(), ny = dim.y();
-    const size_t nz = size_t(dim.z()), columns = size_t(nx) * size_t(ny);
-    const double voxel = transform.voxelSize()[0];
-    const float band = float(std::max(3.0, std::ceil(4.0 * min_depth / voxel)));
-
-    // Depth below the filled part's surface, as a true signed distance.
-    const openvdb::FloatGrid::Ptr distance = signed_distance(filled, transform, background, 1.0f, band, progress);
-    progress.update(0.5);
-
-    const auto world = [&](size_t c, double z) {
+//! The block's columns: sizes and the world position of a column's sample.
+struct Columns {
+    Columns(const openvdb::tools::Dense<float>& block, const openvdb::math::Transform& transform)
+        : box(block.bbox()), transform(transform) {
+        const openvdb::Coord dim = box.dim();
+        nx = dim.x();
+        ny = dim.y();
+        nz = size_t(dim.z());
+        count = size_t(nx) * size_t(ny);
+        voxel = transform.voxelSize()[0];
+    }
+    openvdb::Vec3d world(size_t c, double z) const {
         const int i = int(c / size_t(ny)) + box.min().x(), j = int(c % size_t(ny)) + box.min().y();
         return transform.indexToWorld(openvdb::Vec3d(i, j, double(box.min().z()) + z));
-    };
-    // Per column: how deep the input surface at its gaps is buried (0: no
-    // gap bounded by input surface).
-    std::vector<float> depth(columns, 0.0f);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, columns), [&](const tbb::blocked_range<size_t>& range) {
+    }
+    openvdb::CoordBBox box;
+    const openvdb::math::Transform& transform;
+    int nx = 0, ny = 0;
+    size_t nz = 0, count = 0;
+    double voxel = 0;
+};
+
+//! Phase 1. Per column: how deep below the filled part's surface (`distance`,
+//! its true signed distance) the input surface at the column's gaps is
+//! buried (0: no gap bounded by input surface).
+std::vector<float> buried_depths(const Columns& columns, const std::vector<float>& original,
+                                 const openvdb::FloatGrid& surface, const openvdb::FloatGrid& distance,
+                                 Progress& progress) {
+    std::vector<float> depth(columns.count, 0.0f);
+    const size_t nz = columns.nz;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, columns.count), [&](const tbb::blocked_range<size_t>& range) {
         if (progress.cancelled()) return;
         const openvdb::FloatGrid::ConstAccessor surface_access = surface.getConstAccessor();
-        const openvdb::FloatGrid::ConstAccessor distance_access = distance->getConstAccessor();
+        const openvdb::FloatGrid::ConstAccessor distance_access = distance.getConstAccessor();
         const Sampler surface_sampler(surface_access, surface.transform());
-        const Sampler distance_sampler(distance_access, distance->transform());
+        const Sampler distance_sampler(distance_access, distance.transform());
         for (size_t c = range.begin(); c != range.end(); ++c) {
             const float* column = original.data() + c * nz;
             const std::vector<Run> runs = inside_runs(column, nz);
             for (size_t r = 0; r + 1 < runs.size(); ++r)
                 for (const size_t k : {runs[r].end - 1, runs[r + 1].start - 1}) {
-                    const openvdb::Vec3d p = world(c, zero_crossing(column, k));
-                    if (std::abs(surface_sampler.wsSample(p)) >= voxel) continue;
+                    const openvdb::Vec3d p = columns.world(c, zero_crossing(column, k));
+                    if (std::abs(surface_sampler.wsSample(p)) >= columns.voxel) continue;
                     depth[c] = std::max(depth[c], -distance_sampler.wsSample(p));
                 }
         }
     });
     progress.check();
+    return depth;
+}
 
-    // Regions of gap columns; in a deep one, the shallower half is trimmed.
-    std::vector<int> region(columns, -1);
+//! Phase 2. The regions of gap columns (4-neighbours); in one whose deepest
+//! column lies deeper than `min_depth`, the columns less than half as deep.
+std::vector<size_t> shallow_half_of_deep_regions(const Columns& columns, const std::vector<float>& depth,
+                                                 double min_depth) {
+    const int nx = columns.nx, ny = columns.ny;
+    std::vector<int> region(columns.count, -1);
     std::vector<size_t> trimmed;
     std::vector<size_t> members, stack;
-    for (size_t seed = 0; seed < columns; ++seed) {
+    for (size_t seed = 0; seed < columns.count; ++seed) {
         if (!(depth[seed] > 0) || region[seed] >= 0) continue;
         members.clear();
         stack.assign(1, seed);
@@ -109,52 +121,84 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
         for (size_t c : members)
             if (depth[c] < 0.5f * deepest) trimmed.push_back(c);
     }
-    progress.update(0.75);
-    if (trimmed.empty()) return 0;
+    return trimmed;
+}
 
-    // Each trimmed column keeps one run, the one with the most input surface
-    // at its ends, the longer on a tie; its filled values are kept aside.
-    std::vector<Run> kept(trimmed.size());
-    std::vector<std::vector<float>> filled_columns(trimmed.size());
-    const auto is_input_surface = [&](const Sampler& sampler, size_t c, const float* column, size_t k) {
-        return std::abs(sampler.wsSample(world(c, zero_crossing(column, k)))) < voxel;
-    };
-    const auto trim = [&](size_t t) {
-        const float* column = original.data() + trimmed[t] * nz;
-        float* out = filled.data() + trimmed[t] * nz;
-        const float outside = float(0.5 * voxel);
-        for (size_t k = 0; k < nz; ++k)
-            out[k] = k + 1 >= kept[t].start && k <= kept[t].end ? column[k] : std::max(std::abs(column[k]), outside);
-    };
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, trimmed.size()), [&](const tbb::blocked_range<size_t>& range) {
-        const openvdb::FloatGrid::ConstAccessor surface_access = surface.getConstAccessor();
-        const Sampler surface_sampler(surface_access, surface.transform());
-        for (size_t t = range.begin(); t != range.end(); ++t) {
-            const size_t c = trimmed[t];
-            const float* column = original.data() + c * nz;
-            int kept_ends = -1;
-            for (const Run& run : inside_runs(column, nz)) {
-                const int ends = is_input_surface(surface_sampler, c, column, run.start - 1) +
-                                 is_input_surface(surface_sampler, c, column, run.end - 1);
-                if (ends > kept_ends || (ends == kept_ends && run.end - run.start > kept[t].end - kept[t].start))
-                    kept[t] = run, kept_ends = ends;
+//! Phase 3, and the rounds' undo: trimmed columns keep one run each, the one
+//! with the most input surface at its ends, the longer on a tie.
+class Trimming {
+public:
+    Trimming(const Columns& columns, const std::vector<float>& original, openvdb::tools::Dense<float>& filled,
+             std::vector<size_t> trimmed)
+        : columns_(columns), original_(original), filled_(filled), trimmed_(std::move(trimmed)),
+          kept_(trimmed_.size()), filled_columns_(trimmed_.size()) {}
+
+    //! Chooses each column's run, keeps its filled values aside and trims it.
+    void trim_all(const openvdb::FloatGrid& surface) {
+        const size_t nz = columns_.nz;
+        const auto is_input_surface = [&](const Sampler& sampler, size_t c, const float* column, size_t k) {
+            return std::abs(sampler.wsSample(columns_.world(c, zero_crossing(column, k)))) < columns_.voxel;
+        };
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, trimmed_.size()), [&](const tbb::blocked_range<size_t>& range) {
+            const openvdb::FloatGrid::ConstAccessor surface_access = surface.getConstAccessor();
+            const Sampler surface_sampler(surface_access, surface.transform());
+            for (size_t t = range.begin(); t != range.end(); ++t) {
+                const size_t c = trimmed_[t];
+                const float* column = original_.data() + c * nz;
+                int kept_ends = -1;
+                for (const Run& run : inside_runs(column, nz)) {
+                    const int ends = is_input_surface(surface_sampler, c, column, run.start - 1) +
+                                     is_input_surface(surface_sampler, c, column, run.end - 1);
+                    if (ends > kept_ends || (ends == kept_ends && run.end - run.start > kept_[t].end - kept_[t].start))
+                        kept_[t] = run, kept_ends = ends;
+                }
+                filled_columns_[t].assign(filled_.data() + c * nz, filled_.data() + (c + 1) * nz);
+                trim(t);
             }
-            filled_columns[t].assign(filled.data() + c * nz, filled.data() + (c + 1) * nz);
-            trim(t);
-        }
-    });
-    progress.check();
+        });
+    }
+    //! Column t back to its kept run (outside elsewhere).
+    void trim(size_t t) {
+        const size_t nz = columns_.nz;
+        const float* column = original_.data() + trimmed_[t] * nz;
+        float* out = filled_.data() + trimmed_[t] * nz;
+        const float outside = float(0.5 * columns_.voxel);
+        for (size_t k = 0; k < nz; ++k)
+            out[k] = k + 1 >= kept_[t].start && k <= kept_[t].end ? column[k] : std::max(std::abs(column[k]), outside);
+    }
+    //! Column t filled again, as the sweep left it.
+    void refill(size_t t) {
+        std::copy(filled_columns_[t].begin(), filled_columns_[t].end(), filled_.data() + trimmed_[t] * columns_.nz);
+    }
+    const std::vector<size_t>& columns() const { return trimmed_; }
+    const Run& kept(size_t t) const { return kept_[t]; }
 
-    // A trimmed column is filled again where the input surface it gave up
-    // lies farther from the trimmed part than the column's own buried depth
-    // (thin edges of a given-up run, next to a filled neighbour). The next
-    // round measures what that fill buried, the input surface near the
-    // column's filled gap included (a slot's walls run along the column, and
-    // its depth does not count them): where it is buried deeper than the
-    // given-up surface lay away, the column goes back to its trimmed values
-    // for good. At most 4 rounds, so a fill grows over an edge column by column.
-    // The rounds measure on the block's columns within `band` + 2 of a
-    // trimmed one only: the cut it makes in the part lies beyond the band.
+private:
+    const Columns& columns_;
+    const std::vector<float>& original_;
+    openvdb::tools::Dense<float>& filled_;
+    std::vector<size_t> trimmed_;
+    std::vector<Run> kept_;
+    std::vector<std::vector<float>> filled_columns_;
+};
+
+//! Phase 4. A trimmed column is filled again where the input surface it gave
+//! up lies farther from the trimmed part than the column's own buried depth
+//! (thin edges of a given-up run, next to a filled neighbour). The next round
+//! measures what that fill buried, the input surface near the column's
+//! filled gap included (a slot's walls run along the column, and its depth
+//! does not count them): where it is buried deeper than the given-up surface
+//! lay away, the column goes back to its trimmed values for good. At most 4
+//! rounds, so a fill grows over an edge column by column. The rounds measure
+//! on the block's columns within `band` + 2 of a trimmed one only: the cut it
+//! makes in the part lies beyond the band. Returns the columns left trimmed.
+size_t refill_given_up_edges(const Columns& columns, Trimming& trimming, const openvdb::tools::Dense<float>& filled,
+                             const std::vector<float>& depth, const openvdb::FloatGrid& surface,
+                             const openvdb::FloatGrid* others, float background, float band, Progress& progress) {
+    const std::vector<size_t>& trimmed = trimming.columns();
+    const int nx = columns.nx, ny = columns.ny;
+    const size_t nz = columns.nz;
+    const openvdb::CoordBBox& box = columns.box;
     openvdb::CoordBBox around;
     for (const size_t c : trimmed) around.expand(openvdb::Coord(int(c / size_t(ny)), int(c % size_t(ny)), 0));
     const int reach = int(band) + 2;
@@ -169,12 +213,13 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
             for (int j = j0; j <= j1; ++j)
                 std::copy_n(filled.data() + (size_t(i) * size_t(ny) + size_t(j)) * nz, nz,
                             part.data() + (size_t(i - i0) * part_ny + size_t(j - j0)) * nz);
-        return signed_distance(part, transform, background, band, band, progress);
+        return signed_distance(part, columns.transform, background, band, band, progress);
     };
     enum State : char { Trimmed, Refilled, Filled, TrimmedBack };
     std::vector<State> state(trimmed.size(), Trimmed);
     std::vector<float> given_up(trimmed.size(), 0.0f);
     const int rounds = 4;
+    const double voxel = columns.voxel;
     for (int round = 0; round <= rounds; ++round) {
         const openvdb::FloatGrid::Ptr distance_now = distance_near_trimmed();
         std::vector<char> refill(trimmed.size(), 0), restore(trimmed.size(), 0);
@@ -189,10 +234,11 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
             for (size_t t = range.begin(); t != range.end(); ++t) {
                 if (state[t] == Filled || state[t] == TrimmedBack || (state[t] == Trimmed && round == rounds)) continue;
                 const size_t c = trimmed[t];
+                const Run& kept = trimming.kept(t);
                 float farthest = 0, deepest_buried = 0;
                 for (size_t k = 0; k < nz; ++k) {
-                    if (k + 1 >= kept[t].start && k <= kept[t].end) continue;
-                    const openvdb::Vec3d p = world(c, double(k));
+                    if (k + 1 >= kept.start && k <= kept.end) continue;
+                    const openvdb::Vec3d p = columns.world(c, double(k));
                     const float to_surface = std::abs(surface_sampler.wsSample(p));
                     if (to_surface >= voxel) continue;
                     const float value = distance_sampler.wsSample(p);
@@ -210,9 +256,9 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
         for (size_t t = 0; t < trimmed.size(); ++t) {
             if (state[t] == Refilled) {
                 state[t] = restore[t] ? TrimmedBack : Filled;
-                if (restore[t]) trim(t);
+                if (restore[t]) trimming.trim(t);
             } else if (refill[t]) {
-                std::copy(filled_columns[t].begin(), filled_columns[t].end(), filled.data() + trimmed[t] * nz);
+                trimming.refill(t);
                 state[t] = Refilled;
                 ++changed;
             }
@@ -220,6 +266,27 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
         if (changed == 0) break;
     }
     return trimmed.size() - size_t(std::count(state.begin(), state.end(), Filled));
+}
+
+}  // namespace
+
+size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense<float>& filled,
+                       const openvdb::math::Transform& transform, const openvdb::FloatGrid& surface,
+                       float background, double min_depth, const openvdb::FloatGrid* others, Progress& progress) {
+    progress.stage("sweep: fill or trim");
+    const Columns columns(filled, transform);
+    const float band = float(std::max(3.0, std::ceil(4.0 * min_depth / columns.voxel)));
+    // Depth below the filled part's surface, as a true signed distance.
+    const openvdb::FloatGrid::Ptr distance = signed_distance(filled, transform, background, 1.0f, band, progress);
+    progress.update(0.5);
+    const std::vector<float> depth = buried_depths(columns, original, surface, *distance, progress);
+    std::vector<size_t> trimmed = shallow_half_of_deep_regions(columns, depth, min_depth);
+    progress.update(0.75);
+    if (trimmed.empty()) return 0;
+    Trimming trimming(columns, original, filled, std::move(trimmed));
+    trimming.trim_all(surface);
+    progress.check();
+    return refill_given_up_edges(columns, trimming, filled, depth, surface, others, background, band, progress);
 }
 
 }  // namespace fabvdb::volume

@@ -1,7 +1,8 @@
 /* hollow_api_test.c — the hollowing C API from C alone: defaults, a hollowed
  * 40 mm cube (volumes checked by the divergence theorem here, not by the
- * library), the report, the shell level set, bad arguments and cancellation
- * leaving the out-parameters untouched. */
+ * library), the report, the shell level set, a solid given as a level set
+ * (fabvdb_volume_hollow), bad arguments and cancellation leaving the
+ * out-parameters untouched. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -106,6 +107,38 @@ int main(void) {
     fabvdb_report_free(thin);
     fabvdb_mesh_free(hollowed);
     options.wall = 3;
+    /* A solid given as a level set is hollowed at its own voxel size (the
+     * options' voxel is ignored); the shell it returns encloses 40^3 - 34^3. */
+    fabvdb_volume_options solid_options;
+    fabvdb_volume_options_init(&solid_options);
+    solid_options.voxel_size = 1.0;
+    fabvdb_volume* solid = NULL;
+    CHECK(fabvdb_volume_from_mesh(ctx, cube, &solid_options, &solid, NULL) == FABVDB_OK);
+    options.voxel_size = 0.25;
+    fabvdb_volume* solid_shell = NULL;
+    CHECK(fabvdb_volume_hollow(ctx, solid, &options, &solid_shell, &report) == FABVDB_OK);
+    CHECK(solid_shell != NULL && fabvdb_volume_voxel_size(solid_shell) == 1.0);
+    CHECK(fabvdb_report_number(ctx, report, "/voxel_size", &number) == FABVDB_OK && number == 1.0);
+    CHECK(fabvdb_report_number(ctx, report, "/cavity_count", &number) == FABVDB_OK && number == 1);
+    fabvdb_report_free(report);
+    report = NULL;
+    fabvdb_mesh* solid_shell_surface = NULL;
+    CHECK(fabvdb_volume_to_mesh(ctx, solid_shell, NULL, &solid_shell_surface) == FABVDB_OK);
+    CHECK(fabs(signed_volume(solid_shell_surface) - (64000.0 - 39304.0)) < 0.03 * (64000.0 - 39304.0));
+    fabvdb_mesh_free(solid_shell_surface);
+    fabvdb_volume_free(solid_shell);
+    solid_shell = NULL;
+    CHECK(fabvdb_volume_hollow(ctx, NULL, &options, &solid_shell, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    options.wall = 25; /* no cavity left in a 40 mm cube */
+    CHECK(fabvdb_volume_hollow(ctx, solid, &options, &solid_shell, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    options.wall = 3;
+    int solid_calls = 0;
+    CHECK(fabvdb_ctx_set_progress(ctx, cancel_on_second_stage, &solid_calls) == FABVDB_OK);
+    CHECK(fabvdb_volume_hollow(ctx, solid, &options, &solid_shell, &report) == FABVDB_ERR_CANCELLED);
+    CHECK(fabvdb_ctx_set_progress(ctx, NULL, NULL) == FABVDB_OK);
+    CHECK(solid_shell == NULL && report == NULL);
+    fabvdb_volume_free(solid);
+    options.voxel_size = 1.0;
 
     /* Bad arguments leave the out-parameters untouched. */
     hollowed = NULL;

@@ -4,8 +4,8 @@
 # maps are binary PLYs with colours and quality and PNG legends, the
 # simulation reads the report and replays its cleaning routine exactly;
 # --target takes a percentage; a part too thin for a cavity comes back solid
-# without holes; bad inputs give exit code 2 (bad options 1) and leave no
-# output.
+# without holes; bad inputs give exit code 2 (bad options 1, from the
+# library's range checks) and leave no output.
 set -u
 fabvdb="$1"; data="$2"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
@@ -16,7 +16,7 @@ fail() { echo "FAIL: $*"; exit 1; }
     --heatmap "$work/heat.ply" --report "$work/r.json" --quiet || fail "drain exit $?"
 [ -s "$work/out.stl" ] || fail "no output mesh"
 for key in '"holes"' '"center"' '"axis"' '"diameter"' '"cavity"' '"predicted_residual_fraction"' \
-           '"predicted_residual_mm3"' '"baseline_residual_fraction"' '"timings"'; do
+           '"predicted_residual_volume"' '"baseline_residual_fraction"' '"timings"'; do
     grep -q "$key" "$work/r.json" || fail "report lacks $key"
 done
 for map in heat heat_left; do
@@ -82,5 +82,13 @@ echo '{"holes": [{"center": [0, 0]}]}' > "$work/bad.json"
 [ $? -eq 1 ] || fail "--target 1x: expected exit 1"
 "$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --keep-out "$work/missing.json" --quiet 2>/dev/null
 [ $? -eq 2 ] || fail "missing keep-out: expected exit 2"
+# Ranges are checked once, in the library; the command maps its invalid-argument status to exit 1.
+"$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --patches 5 --quiet 2>"$work/err"
+[ $? -eq 1 ] || fail "--patches 5: expected exit 1"
+grep -q "patch_count must be >= 10" "$work/err" || fail "--patches 5: the message does not name the range"
+"$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --repose 95deg --quiet 2>/dev/null
+[ $? -eq 1 ] || fail "--repose 95deg: expected exit 1"
+"$fabvdb" powder-sim "$work/out.stl" --holes "$work/r.json" --turns 0 --quiet 2>/dev/null
+[ $? -eq 1 ] || fail "powder-sim --turns 0: expected exit 1"
 [ ! -e "$work/never.stl" ] || fail "a failed drain left an output"
 echo ok

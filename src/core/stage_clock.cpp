@@ -1,0 +1,21 @@
+//! StageClock: see stage_clock.h.
+#include "core/stage_clock.h"
+
+namespace fabvdb {
+
+StageClock::StageClock(std::map<std::string, double>& seconds)
+    : seconds_(seconds), start_(std::chrono::steady_clock::now()), since_(start_) {}
+
+double StageClock::lap(const std::string& stage) {
+    const auto now = std::chrono::steady_clock::now();
+    const double lap = std::chrono::duration<double>(now - since_).count();
+    seconds_[stage] += lap;
+    since_ = now;
+    return lap;
+}
+
+double StageClock::total() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+}  // namespace fabvdb

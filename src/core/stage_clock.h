@@ -1,0 +1,29 @@
+//! StageClock: the wall time of the consecutive stages of an operation, for
+//! the `timings` object of its report (docs/reports.md). lap(name) adds the
+//! time since the previous lap (or since the clock was made) to `name` in the
+//! map it writes to, so a stage run several times adds up. total() is the time
+//! since the clock was made. Costs one steady_clock read per lap; not
+//! thread-safe (one clock per operation).
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <string>
+
+namespace fabvdb {
+
+class StageClock {
+public:
+    //! Writes into `seconds` (stage name → seconds), which must outlive the clock.
+    explicit StageClock(std::map<std::string, double>& seconds);
+    //! Adds the time since the previous lap to `stage`; returns it (s).
+    double lap(const std::string& stage);
+    //! Seconds since the clock was made.
+    double total() const;
+
+private:
+    std::map<std::string, double>& seconds_;
+    std::chrono::steady_clock::time_point start_, since_;
+};
+
+}  // namespace fabvdb

@@ -1,0 +1,141 @@
+//! drainability_model against hand-worked cases, on the model that
+//! plan_drain_holes builds for a hollow sphere (cavity radius 12.5 mm) with
+//! the operator turning it only to "as printed" (gravity −z):
+//! - absorbing(): a tunnel passes powder when its axis is within 90° − θ_r of
+//!   gravity (θ_r = 35°); a flatter one when the slope of repose from its
+//!   outer lip meets the inner mouth below its top: for a horizontal tunnel
+//!   of diameter D and length L, when D > L·tan θ_r; never when it points up.
+//! - As printed, a hole at the bottom leaves the powder under the crater's
+//!   cone rising at θ_r from the rim of its mouth: the share of the sphere
+//!   under that cone, integrated here on a fine grid, about 4.5%.
+//! - No hole keeps everything; adding a hole never keeps more; a hole at the
+//!   top drains nothing as printed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cavity_shapes.h"
+#include "powder/drain_plan.h"
+
+namespace {
+
+using fabvdb::Vec3;
+using fabvdb::powder::DrainabilityModel;
+using fabvdb::powder::DrainHole;
+
+constexpr double kRepose = 35.0 * M_PI / 180.0;
+constexpr double kCavity = 12.5;
+
+//! Runs `check` on the model and candidates of a hollow sphere's plan.
+template <class Check>
+void with_sphere_model(Check check) {
+    const auto part = fabvdb::test::hollow_sphere({0, 0, 0}, 15.0, 2.5, 0.5);
+    fabvdb::powder::DrainPlanOptions options;
+    options.patch_count = 600;
+    options.powder_samples = 40000;
+    options.nominal_wall = 2.5;
+    options.orientations = {{0, 0, -1}};
+    options.search.hole_count = 1;
+    bool ran = false;
+    options.inspect = [&](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
+        ran = true;
+        check(model, candidates);
+    };
+    fabvdb::Progress progress;
+    fabvdb::powder::plan_drain_holes(*part.part, *part.cavity, *part.shell, options, progress);
+    EXPECT_TRUE(ran);
+}
+
+DrainHole tunnel(const Vec3& axis, double diameter, double through) {
+    DrainHole hole;
+    hole.center = {0, 0, 0};
+    hole.axis = axis;
+    hole.diameter = diameter;
+    hole.through = through;
+    hole.depth = through + diameter;
+    return hole;
+}
+
+//! The candidate whose centre is lowest (or highest) along z.
+const DrainHole& extreme(const std::vector<DrainHole>& candidates, bool lowest) {
+    return *std::min_element(candidates.begin(), candidates.end(), [&](const DrainHole& a, const DrainHole& b) {
+        return lowest ? a.center[2] < b.center[2] : a.center[2] > b.center[2];
+    });
+}
+
+//! Share of a sphere of radius `r` (centre at the origin) under the cone of
+//! slope θ_r rising from the rim (radius `mouth`) around `apex`, gravity −z.
+double share_under_cone(double r, const Vec3& apex, double mouth) {
+    const int n = 240;
+    const double h = 2 * r / n, slope = std::tan(kRepose);
+    double under = 0, all = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                const double x = -r + (i + 0.5) * h, y = -r + (j + 0.5) * h, z = -r + (k + 0.5) * h;
+                if (x * x + y * y + z * z > r * r) continue;
+                ++all;
+                const double across = std::hypot(x - apex[0], y - apex[1]);
+                const double rise = z - apex[2];
+                const bool stays = across <= mouth ? rise < -mouth : rise < slope * (across - mouth);
+                under += stays;
+            }
+    return under / all;
+}
+
+}  // namespace
+
+TEST(DrainabilityModel, AbsorbingTunnelsByHand) {
+    with_sphere_model([](const DrainabilityModel& model, const std::vector<DrainHole>&) {
+        const DrainHole down = tunnel({0, 0, -1}, 4.0, 2.5);
+        EXPECT_TRUE(model.absorbing(down, {0, 0, -1}));
+        // 50° off the axis: within 90° − 35° = 55°, steep.
+        EXPECT_TRUE(model.absorbing(down, {std::sin(50 * M_PI / 180), 0, -std::cos(50 * M_PI / 180)}));
+        // Pointing up: powder would have to climb the tunnel.
+        EXPECT_FALSE(model.absorbing(down, {0, 0, 1}));
+        // Horizontal: passes when D > L·tan θ_r (4 > 2.5·0.70 = 1.75), not for L = 8 (5.6 > 4).
+        EXPECT_TRUE(model.absorbing(down, {1, 0, 0}));
+        EXPECT_FALSE(model.absorbing(tunnel({0, 0, -1}, 4.0, 8.0), {1, 0, 0}));
+        // 60° off the axis (30° below horizontal), L = 2.5: the outer lip lies
+        // below the inner mouth's top by 4.7 mm over 0.17 mm across: passes.
+        EXPECT_TRUE(model.absorbing(down, {std::sin(60 * M_PI / 180), 0, -std::cos(60 * M_PI / 180)}));
+    });
+}
+
+TEST(DrainabilityModel, BottomHoleKeepsTheCraterRimAsPrinted) {
+    with_sphere_model([](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
+        const DrainHole& bottom = extreme(candidates, true);
+        ASSERT_LT(bottom.center[2], -kCavity + 0.5);
+        ASSERT_TRUE(model.absorbing(bottom, {0, 0, -1}));
+        const DrainabilityModel::Drain drained = model.drain(std::vector<DrainHole>{bottom});
+        const double kept = 1.0 - drained.drained_first_volume / model.total_volume();
+        const double expected = share_under_cone(kCavity, bottom.center, 0.5 * bottom.diameter);
+        EXPECT_GT(expected, 0.03);
+        EXPECT_LT(expected, 0.07);
+        EXPECT_NEAR(kept, expected, 0.015);
+    });
+}
+
+TEST(DrainabilityModel, MoreHolesNeverKeepMore) {
+    with_sphere_model([](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
+        EXPECT_NEAR(model.evaluate(std::vector<DrainHole>{}).residual_fraction(), 1.0, 1e-9);
+        const DrainHole& bottom = extreme(candidates, true);
+        const DrainHole& top = extreme(candidates, false);
+        ASSERT_GT(top.center[2], kCavity - 0.5);
+        // As printed nothing reaches a hole at the top.
+        EXPECT_EQ(model.drain(std::vector<DrainHole>{top}).drained_first_volume, 0.0);
+        EXPECT_FALSE(model.absorbing(top, {0, 0, -1}));
+        const double one = model.evaluate(std::vector<DrainHole>{bottom}).residual_fraction();
+        const double two = model.evaluate(std::vector<DrainHole>{bottom, top}).residual_fraction();
+        EXPECT_LT(one, 0.1);
+        EXPECT_LE(two, one + 1e-12);
+        EXPECT_NEAR(model.predicted_residual(model.drain(std::vector<DrainHole>{bottom})), model.evaluate(std::vector<DrainHole>{bottom}).residual_volume,
+                    1e-9 * model.total_volume());
+        // Drainability of the patches lies in [0, 1].
+        for (double d : model.evaluate(std::vector<DrainHole>{bottom}).drainability) {
+            EXPECT_GE(d, -1e-9);
+            EXPECT_LE(d, 1.0 + 1e-9);
+        }
+    });
+}
