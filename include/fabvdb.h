@@ -2,13 +2,15 @@
  * fabvdb.h — the public C API of fabvdb, a library that prepares 3D models for
  * fabrication: repair, hollowing, drain holes, mold decomposition and molds.
  *
- * Conventions (see README "C API"):
+ * Conventions (see README "The C API"; reports: docs/reports.md):
  *   - Opaque handles, each with one create/free pair; freeing NULL does nothing.
  *   - Every fallible call takes the context first and returns fabvdb_status;
  *     results come back through out-parameters, which are left untouched on
  *     failure. The message of the last failure is fabvdb_last_error(ctx).
  *   - No call throws or aborts; a cancelled call never returns a partial result.
  *   - Option structs have an _init() that sets struct_size and the defaults.
+ *     A caller built against an older header passes its older, smaller
+ *     struct: the fields it does not know keep their defaults.
  *   - Lengths are millimetres.
  *   - A context may be used by one thread at a time; fabvdb_ctx_cancel() is the
  *     one call that is safe from any thread. Distinct contexts are independent.
@@ -23,8 +25,14 @@
 
 #include "fabvdb_version.h"
 
-#if defined(_WIN32)
+/* Exported when the library is built (CMake defines FABVDB_BUILDING), imported
+ * by its users; a static build defines FABVDB_STATIC. */
+#if defined(_WIN32) && defined(FABVDB_STATIC)
+#define FABVDB_API
+#elif defined(_WIN32) && defined(FABVDB_BUILDING)
 #define FABVDB_API __declspec(dllexport)
+#elif defined(_WIN32)
+#define FABVDB_API __declspec(dllimport)
 #else
 #define FABVDB_API __attribute__((visibility("default")))
 #endif
@@ -126,6 +134,18 @@ FABVDB_API const char* fabvdb_report_json(const fabvdb_report* report);
  * or not a number/boolean) or FABVDB_ERR_INVALID_ARGUMENT. */
 FABVDB_API fabvdb_status fabvdb_report_number(fabvdb_ctx* ctx, const fabvdb_report* report,
                                               const char* pointer, double* out);
+/* Reads a string at a JSON pointer such as "/outer_surface". *out points into
+ * the report (valid until it is freed; do not free it). Returns FABVDB_OK,
+ * FABVDB_ERR_NOT_FOUND (no such key, or the value is not a string) or
+ * FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_report_string(fabvdb_ctx* ctx, const fabvdb_report* report,
+                                              const char* pointer, const char** out);
+/* The element count of the array (or the key count of the object) at a JSON
+ * pointer such as "/holes" ("" is the whole report). Returns FABVDB_OK,
+ * FABVDB_ERR_NOT_FOUND (no such key, or the value is neither an array nor an
+ * object) or FABVDB_ERR_INVALID_ARGUMENT. (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_report_count(fabvdb_ctx* ctx, const fabvdb_report* report,
+                                             const char* pointer, size_t* out);
 /* Writes the report's JSON to path, atomically (temporary file, then rename).
  * Returns FABVDB_OK, FABVDB_ERR_IO or FABVDB_ERR_INVALID_ARGUMENT. */
 FABVDB_API fabvdb_status fabvdb_report_write(fabvdb_ctx* ctx, const fabvdb_report* report,
@@ -183,7 +203,7 @@ FABVDB_API const uint32_t* fabvdb_mesh_triangles(const fabvdb_mesh* mesh);
  * boundary_edges, boundary_loops, non_manifold_edges, non_manifold_vertices,
  * degenerate_triangles, duplicate_triangles, self_intersecting_pairs,
  * consistently_oriented, volume (null unless closed), genus (null unless
- * closed and manifold), bbox {min, max}; see README "fabvdb info".
+ * closed and manifold), bbox {min, max}; see docs/info.md.
  * out: receives the report, owned by the caller.
  * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT, FABVDB_ERR_CANCELLED,
  * FABVDB_ERR_OUT_OF_MEMORY. Reports progress. */
@@ -380,7 +400,7 @@ typedef struct fabvdb_drain_options {
                                     (default): the 162 icosphere directions. Borrowed. */
     size_t orientation_count;
     double first_gravity[3];     /* gravity as printed, the first orientation; default 0 0 -1 */
-    int patch_count;             /* cavity surface patches of the model; default 2000 */
+    int patch_count;             /* cavity surface patches of the model, at least 10; default 2000 */
     const char* keep_out_path;   /* NULL (default), or a JSON file of spheres
                                     ({"spheres": [{"center": [x,y,z], "radius": r}]}) or a closed
                                     mesh file: no hole opens in it. Borrowed. */
@@ -399,25 +419,27 @@ FABVDB_API void fabvdb_drain_options_init(fabvdb_drain_options* options);
 /* Places drain holes in a part for powder printing and drills them. A solid
  * mesh is hollowed first (options->wall); a mesh that already is a hollow
  * shell (it has inward-facing shells around a void) is used as is. The holes
- * maximise the powder the drainability model drains (README "fabvdb drain");
+ * maximise the powder the drainability model drains (docs/drain.md);
  * each cavity gets its own. The report has holes[] ({center, axis, diameter,
- * cavity, depth}); predicted_residual_fraction and predicted_residual_mm3
+ * cavity, depth}); predicted_residual_fraction and predicted_residual_volume
  * (the model's mean over random operator routines) and random_routines
  * {routines, mean_fraction, std_fraction, min_fraction, max_fraction};
  * routine[] (the recommended cleaning routine, first turn as printed: each
  * {gravity, hole_down (index into holes[] or null), lowest_hole, tilt_degrees,
- * tilt_axis, instruction}), routine_residual_fraction and routine_residual_mm3
+ * tilt_axis, instruction}), routine_residual_fraction and routine_residual_volume
  * (the prediction under it); the lowest-point baseline with as many holes
- * (baseline_holes[], baseline_residual_fraction, baseline_residual_mm3,
+ * (baseline_holes[], baseline_residual_fraction, baseline_residual_volume,
  * baseline_routine_residual_fraction under its own routine); heatmap (with a
  * heat-map path: the files, their ranges and the share that drains averaged
- * by powder); cavity_volume_mm3, cavities (= cavity_count), patches, candidates,
- * input_was_hollow, voxel_size, timings, warnings. No cavity: no holes, solid out.
+ * by powder); cavity_volume, residual_volume_per_cavity, cavities (=
+ * cavity_count), patches, candidates, input_was_hollow, voxel_size,
+ * repose_degrees, effort, orientations, timings (seconds per stage, and
+ * total) and warnings (docs/drain.md). No cavity: no holes, solid out.
  * mesh: borrowed. options: borrowed; NULL means the defaults.
  * out_mesh: receives the drilled part (owned by the caller). out_report:
  * receives the report (owned by the caller); may be NULL if not wanted.
  * Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (NULL ctx/mesh/out_mesh, an
- * option out of range, struct_size too small), FABVDB_ERR_BAD_INPUT (no
+ * option out of range, struct_size not set or from a newer header), FABVDB_ERR_BAD_INPUT (no
  * site where a hole passes cleanly through the wall; a malformed
  * keep-out file), FABVDB_ERR_IO (keep-out or heat-map file), FABVDB_ERR_OUT_OF_BUDGET,
  * FABVDB_ERR_OUT_OF_MEMORY, FABVDB_ERR_CANCELLED or FABVDB_ERR_INTERNAL; on
@@ -452,9 +474,10 @@ FABVDB_API void fabvdb_powder_options_init(fabvdb_powder_options* options);
  * fills the cavity of `part` (a hollow shell, drilled or not) with powder,
  * drills the holes, and runs voxel sand-pile rules through the operator's
  * routine: the first orientation, then turns-1 orientations drawn with the
- * seed (or the routine of options->routine_json). The report has initial_mm3, residual_mm3, residual_fraction,
- * residual_after_turn_mm3[], routine[] (the gravity of each turn), voxel_size
- * and timings.
+ * seed (or the routine of options->routine_json). The report has
+ * initial_volume, residual_volume, residual_fraction,
+ * residual_volume_after_turn[], routine[] (the gravity of each turn),
+ * voxel_size and timings (docs/powder-sim.md).
  * part: borrowed. holes_json: JSON text, a drain report or any object with a
  * holes[] array of {center, axis, diameter, depth} (depth: drilled length from
  * the center outward; default 4 diameters).
@@ -512,7 +535,7 @@ FABVDB_API void fabvdb_decompose_options_init(fabvdb_decompose_options* options)
  * mesh: borrowed; may be dirty (it goes through the robust signed distance).
  * opts: NULL for the defaults.
  * edits_path: NULL, or a JSON file of edits applied in order after the
- *   automatic decomposition, in world coordinates (README "fabvdb decompose"):
+ *   automatic decomposition, in world coordinates (docs/decompose.md):
  *   {"edits": [{"type": "no_cut", "points": [[x,y,z],...], "radius": r},
  *              {"type": "cut", "points": [[x,y,z],...], "closed": false},
  *              {"type": "merge", "points": [[x,y,z],[x,y,z]]},
@@ -525,15 +548,16 @@ FABVDB_API void fabvdb_decompose_options_init(fabvdb_decompose_options* options)
  * out_report: NULL, or receives a report (owned by the caller) with gamma,
  *   shell_thickness, unit_scale, low_res {triangles, thin_segments, voxel_size,
  *   ...}, overlap_pairs, attempts [{parts, iterations,
- *   region_cost_per_iteration, moldability_energy, seconds_per_iteration,
- *   parting_line_seconds}], smoothing {iterations, smoothness [E_smooth per
+ *   region_cost_per_iteration, moldability_energy, timings {per_iteration,
+ *   parting_line}}], smoothing {iterations, smoothness [E_smooth per
  *   accepted iteration], moldability_energy [likewise], vertices_moved,
- *   parts_touched}, edits [{type, parts_touched, parts_after, seconds,
+ *   parts_touched}, edits [{type, parts_touched, parts_after, timings {total},
  *   total_moldability_energy, warning}], part_count, parts [{id, parting_direction,
  *   moldability_energy, area}], total_moldability_energy, under_gamma,
- *   warnings [text], seconds {stage: seconds}.
+ *   warnings [text], timings {stage: seconds, precompute_per_direction,
+ *   total} (docs/decompose.md).
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle or out_dir, an
- * option out of range, struct_size too small); FABVDB_ERR_BAD_INPUT (a mesh
+ * option out of range, struct_size not set or from a newer header); FABVDB_ERR_BAD_INPUT (a mesh
  * that encloses no volume, a malformed edits file or an edit that does not
  * apply, e.g. a merge of two points on the same part); FABVDB_ERR_IO (the
  * edits file or out_dir's parent cannot be read or written);
@@ -808,10 +832,10 @@ FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
  *   coordinates: a part's point p is at R p + common_mold_offset, R the
  *   rotation taking its parting direction to +Z), mean_distance_ratio and
  *   hausdorff_ratio (distances from the input's vertices to the nearest part
- *   surface over the bounding-box diagonal), seconds {stage: seconds}, and decomposition (the
+ *   surface over the bounding-box diagonal), timings {stage: seconds, total}, and decomposition (the
  *   decomposition's report, when it ran) or decomposition_file.
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL mesh or out_dir, an
- * option out of range, struct_size too small); FABVDB_ERR_BAD_INPUT (a
+ * option out of range, struct_size not set or from a newer header); FABVDB_ERR_BAD_INPUT (a
  * decomposition file that is malformed, misses parts or belongs to another
  * model or scale: the message names the file and the defect; a part that
  * cannot be molded); FABVDB_ERR_IO; FABVDB_ERR_OUT_OF_BUDGET;

@@ -148,18 +148,14 @@ static int run_drain(cli_run* run) {
         fabvdb_report_free(report);
         return written;
     }
-    double holes_count = 0, predicted = 0, baseline = 0;
+    double predicted = 0, baseline = 0;
+    size_t holes_count = 0;
     fabvdb_report_number(run->ctx, report, "/predicted_residual_fraction", &predicted);
     fabvdb_report_number(run->ctx, report, "/baseline_residual_fraction", &baseline);
-    for (;; ++holes_count) {
-        char pointer[64];
-        double x;
-        snprintf(pointer, sizeof pointer, "/holes/%d/diameter", (int)holes_count);
-        if (fabvdb_report_number(run->ctx, report, pointer, &x) != FABVDB_OK) break;
-    }
+    fabvdb_report_count(run->ctx, report, "/holes", &holes_count);
     cli_print_warnings(run, report);
     if (cavities > 0) {
-        printf("%.0f drain holes; predicted powder left inside: %.2f%% (lowest-point holes: %.2f%%)\n", holes_count,
+        printf("%zu drain holes; predicted powder left inside: %.2f%% (lowest-point holes: %.2f%%)\n", holes_count,
                100.0 * predicted, 100.0 * baseline);
         print_routine(run, report);
     } else {

@@ -127,6 +127,22 @@ static void test_inspect_report(fabvdb_ctx* ctx) {
     CHECK(fabvdb_report_number(ctx, report, "/bbox/max/2", &value) == FABVDB_OK && value == 1);
     CHECK(fabvdb_report_number(ctx, report, "/no_such_key", &value) == FABVDB_ERR_NOT_FOUND);
     CHECK(fabvdb_report_number(ctx, report, "not a pointer", &value) == FABVDB_ERR_INVALID_ARGUMENT);
+    /* Element counts: an array's length, an object's keys (bbox: min and max;
+     * bbox/min: three coordinates); a number has none. */
+    size_t count = 0;
+    CHECK(fabvdb_report_count(ctx, report, "/bbox", &count) == FABVDB_OK && count == 2);
+    CHECK(fabvdb_report_count(ctx, report, "/bbox/min", &count) == FABVDB_OK && count == 3);
+    CHECK(fabvdb_report_count(ctx, report, "/volume", &count) == FABVDB_ERR_NOT_FOUND);
+    CHECK(fabvdb_report_count(ctx, report, "/no_such_key", &count) == FABVDB_ERR_NOT_FOUND);
+    CHECK(fabvdb_report_count(ctx, report, "no slash", &count) == FABVDB_ERR_INVALID_ARGUMENT);
+    CHECK(fabvdb_report_count(ctx, report, "/bbox", NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    CHECK(count == 3); /* untouched by the failures */
+    /* Strings: none in an inspection report but the timings' keys, so a
+     * number is not one. */
+    const char* text = "untouched";
+    CHECK(fabvdb_report_string(ctx, report, "/volume", &text) == FABVDB_ERR_NOT_FOUND);
+    CHECK(strcmp(text, "untouched") == 0);
+    CHECK(fabvdb_report_string(ctx, NULL, "/volume", &text) == FABVDB_ERR_INVALID_ARGUMENT);
     CHECK(strstr(fabvdb_report_json(report), "\"self_intersecting_pairs\"") != NULL);
     CHECK(fabvdb_report_write(ctx, report, "/nonexistent/dir/r.json") == FABVDB_ERR_IO);
     fabvdb_report_free(report);

@@ -60,6 +60,11 @@ int main(void) {
     CHECK(fabvdb_report_number(ctx, report, "/volume_shell", &number) == FABVDB_OK && fabs(number - shell) < 1e-6 * shell);
     CHECK(fabvdb_report_number(ctx, report, "/cavity_count", &number) == FABVDB_OK && number == 1);
     CHECK(fabvdb_report_number(ctx, report, "/material_saved_fraction", &number) == FABVDB_OK && number > 0.5);
+    /* A clean closed cube keeps its own outer surface; the report says so as text. */
+    const char* outer = NULL;
+    CHECK(fabvdb_report_string(ctx, report, "/outer_surface", &outer) == FABVDB_OK && strcmp(outer, "input") == 0);
+    size_t cavities = 0;
+    CHECK(fabvdb_report_count(ctx, report, "/cavities", &cavities) == FABVDB_OK && cavities == 1);
     CHECK(fabvdb_report_number(ctx, report, "/output_triangles", &number) == FABVDB_OK &&
           number == (double)fabvdb_mesh_triangle_count(hollowed));
     fabvdb_report_free(report);
