@@ -113,18 +113,20 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
     // Connected components of the four classes (patch × overlap).
     std::vector<int> component(n, -1);
     std::vector<char> label;
-    std::vector<double> projected;
+    std::vector<double> projected, outer_projected;
     for (size_t start = 0; start < n; ++start) {
         if (component[start] >= 0) continue;
         const int c = int(label.size());
         label.push_back(upper[start]);
         projected.push_back(0);
+        outer_projected.push_back(0);
         std::vector<uint32_t> stack{uint32_t(start)};
         component[start] = c;
         while (!stack.empty()) {
             const uint32_t i = stack.back();
             stack.pop_back();
             projected[c] += s.area[i] * std::abs(dot(s.normal[i], d));
+            if (s.kind[i] == PartSurface::outer) outer_projected[c] += s.area[i] * std::abs(dot(s.normal[i], d));
             for (uint32_t j : s.adjacent[i])
                 if (component[j] < 0 && upper[j] == upper[start] && overlapping[j] == overlapping[start]) {
                     component[j] = c;
@@ -142,10 +144,14 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
         l.erase(std::unique(l.begin(), l.end()), l.end());
     }
     std::vector<char> fixed(count, 0);
+    // Each side grows from its largest patch of the outer surface (the inner
+    // surface is not connected to it where the part has no sides: a whole
+    // closed shell).
     int root[2] = {-1, -1};  // [0]: M⁻, [1]: M⁺
     for (size_t c = 0; c < count; ++c) {
         int& r = root[label[c] ? 1 : 0];
-        if (r < 0 || projected[c] > projected[r]) r = int(c);
+        if (r < 0 || std::make_pair(outer_projected[c], projected[c]) > std::make_pair(outer_projected[r], projected[r]))
+            r = int(c);
     }
     for (int r : root)
         if (r >= 0) fixed[r] = 1;

@@ -106,8 +106,8 @@ int main(void) {
     fabvdb_report* thin = NULL;
     CHECK(fabvdb_mesh_hollow(ctx, cube, &options, &hollowed, &thin) == FABVDB_OK);
     CHECK(hollowed != NULL && fabvdb_mesh_triangle_count(hollowed) == fabvdb_mesh_triangle_count(cube));
-    double cavities = -1;
-    CHECK(fabvdb_report_number(ctx, thin, "/cavity_count", &cavities) == FABVDB_OK && cavities == 0);
+    double cavity_count = -1;
+    CHECK(fabvdb_report_number(ctx, thin, "/cavity_count", &cavity_count) == FABVDB_OK && cavity_count == 0);
     CHECK(strstr(fabvdb_report_json(thin), "leaves no cavity") != NULL);
     fabvdb_report_free(thin);
     fabvdb_mesh_free(hollowed);
@@ -134,8 +134,13 @@ int main(void) {
     fabvdb_volume_free(solid_shell);
     solid_shell = NULL;
     CHECK(fabvdb_volume_hollow(ctx, NULL, &options, &solid_shell, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
-    options.wall = 25; /* no cavity left in a 40 mm cube */
-    CHECK(fabvdb_volume_hollow(ctx, solid, &options, &solid_shell, NULL) == FABVDB_ERR_INVALID_ARGUMENT);
+    options.wall = 25; /* no cavity fits in a 40 mm cube: the solid comes back */
+    CHECK(fabvdb_volume_hollow(ctx, solid, &options, &solid_shell, &report) == FABVDB_OK);
+    CHECK(fabvdb_report_number(ctx, report, "/cavity_count", &number) == FABVDB_OK && number == 0);
+    fabvdb_report_free(report);
+    report = NULL;
+    fabvdb_volume_free(solid_shell);
+    solid_shell = NULL;
     options.wall = 3;
     int solid_calls = 0;
     CHECK(fabvdb_ctx_set_progress(ctx, cancel_on_second_stage, &solid_calls) == FABVDB_OK);

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "cavity_shapes.h"
+#include "model_fixture.h"
 #include "powder/drain_plan.h"
 #include "powder/hole_search.h"
 
@@ -19,24 +20,6 @@ namespace {
 
 using fabvdb::powder::DrainabilityModel;
 using fabvdb::powder::DrainHole;
-
-template <class Check>
-void with_model(const fabvdb::test::HollowPart& part, Check check) {
-    fabvdb::powder::DrainPlanOptions options;
-    options.patch_count = 600;
-    options.powder_samples = 20000;
-    options.nominal_wall = 2.5;
-    options.orientations = {{0, 0, -1}};
-    options.search.hole_count = 1;
-    bool ran = false;
-    options.inspect = [&](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
-        ran = true;
-        check(model, candidates);
-    };
-    fabvdb::Progress progress;
-    fabvdb::powder::plan_drain_holes(*part.part, *part.cavity, *part.shell, options, progress);
-    EXPECT_TRUE(ran);
-}
 
 double distance(const DrainHole& a, const DrainHole& b) {
     return std::sqrt(std::pow(a.center[0] - b.center[0], 2) + std::pow(a.center[1] - b.center[1], 2) +
@@ -51,12 +34,13 @@ void expect_spaced(const std::vector<DrainHole>& holes, double spacing) {
 }  // namespace
 
 TEST(HoleSearch, OneHoleGoesToTheBottom) {
-    with_model(fabvdb::test::hollow_sphere({0, 0, 0}, 15.0, 2.5, 0.5),
+    fabvdb::test::with_drainability_model(fabvdb::test::hollow_sphere({0, 0, 0}, 15.0, 2.5, 0.5), 20000,
                [](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
                    fabvdb::powder::HoleSearchOptions options;
                    options.hole_count = 1;
                    fabvdb::Progress progress;
-                   const auto result = fabvdb::powder::search_drain_holes(model, candidates, 1, options, progress);
+                   const auto result =
+                       fabvdb::powder::search_drain_holes(model, candidates, 1, {0, 0, -1}, options, progress);
                    ASSERT_EQ(result.holes.size(), 1u);
                    const double lowest =
                        std::min_element(candidates.begin(), candidates.end(), [](const DrainHole& a, const DrainHole& b) {
@@ -72,13 +56,14 @@ TEST(HoleSearch, OneHoleGoesToTheBottom) {
 }
 
 TEST(HoleSearch, EachCavityGetsItsMinimum) {
-    with_model(fabvdb::test::two_hollow_spheres(12.0, 2.5, 0.5),
+    fabvdb::test::with_drainability_model(fabvdb::test::two_hollow_spheres(12.0, 2.5, 0.5), 20000,
                [](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
                    fabvdb::powder::HoleSearchOptions options;
                    options.hole_count = 4;
                    options.min_center_distance = 8.0;
                    fabvdb::Progress progress;
-                   const auto result = fabvdb::powder::search_drain_holes(model, candidates, 2, options, progress);
+                   const auto result =
+                       fabvdb::powder::search_drain_holes(model, candidates, 2, {0, 0, -1}, options, progress);
                    ASSERT_EQ(result.holes.size(), 4u);
                    int per_sphere[2] = {0, 0};
                    int sphere_of_cavity[2] = {-1, -1};
@@ -101,7 +86,7 @@ TEST(HoleSearch, EachCavityGetsItsMinimum) {
 }
 
 TEST(HoleSearch, AutomaticModeKeepsItsCeiling) {
-    with_model(fabvdb::test::hollow_sphere({0, 0, 0}, 15.0, 2.5, 0.5),
+    fabvdb::test::with_drainability_model(fabvdb::test::hollow_sphere({0, 0, 0}, 15.0, 2.5, 0.5), 20000,
                [](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
                    fabvdb::powder::HoleSearchOptions options;
                    options.hole_count = 0;
@@ -109,7 +94,8 @@ TEST(HoleSearch, AutomaticModeKeepsItsCeiling) {
                    options.max_holes = 5;
                    options.target_residual_fraction = 0.01;
                    fabvdb::Progress progress;
-                   const auto result = fabvdb::powder::search_drain_holes(model, candidates, 1, options, progress);
+                   const auto result =
+                       fabvdb::powder::search_drain_holes(model, candidates, 1, {0, 0, -1}, options, progress);
                    ASSERT_GE(result.holes.size(), 1u);
                    ASSERT_LE(result.holes.size(), 5u);
                    expect_spaced(result.holes, options.min_center_distance);

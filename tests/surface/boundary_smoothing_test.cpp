@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 
 #include "shell_shapes.h"
 #include "surface/boundary_smoothing.h"
@@ -36,28 +35,6 @@ double boundary_amplitude(const fabvdb::surface::Shell& shell, const std::vector
             ++count;
         }
     return count ? sum / double(count) : 0.0;
-}
-
-int pieces(const fabvdb::surface::Shell& shell, const std::vector<int>& part_of_triangle, int part) {
-    std::vector<char> seen(shell.triangle_count(), 0);
-    int count = 0;
-    for (size_t start = 0; start < shell.triangle_count(); ++start) {
-        if (seen[start] || part_of_triangle[start] != part) continue;
-        ++count;
-        std::queue<int> queue;
-        queue.push(int(start));
-        seen[start] = 1;
-        while (!queue.empty()) {
-            const int t = queue.front();
-            queue.pop();
-            for (int u : shell.neighbor[t])
-                if (u >= 0 && !seen[u] && part_of_triangle[u] == part) {
-                    seen[u] = 1;
-                    queue.push(u);
-                }
-        }
-    }
-    return count;
 }
 
 }  // namespace
@@ -106,8 +83,8 @@ TEST(BoundarySmoothing, ZigzagAroundTheEquatorStraightens) {
     // The boundary vertices came closer to the equator (the triangles stay
     // in their parts: the vertices move, the labels do not).
     EXPECT_LT(boundary_amplitude(shell, decomposition.part_of_triangle), amplitude_before);
-    EXPECT_EQ(pieces(shell, decomposition.part_of_triangle, 0), 1);
-    EXPECT_EQ(pieces(shell, decomposition.part_of_triangle, 1), 1);
+    EXPECT_EQ(fabvdb::test::connected_pieces(shell, decomposition.part_of_triangle, 0), 1);
+    EXPECT_EQ(fabvdb::test::connected_pieces(shell, decomposition.part_of_triangle, 1), 1);
     // Every vertex still lies on the sphere it started on (moves slide on S_low).
     for (const Vec3& v : shell.outer.vertices)
         EXPECT_NEAR(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), radius, 0.02 * radius);

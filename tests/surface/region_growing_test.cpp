@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <queue>
 
 #include "shell_shapes.h"
 #include "surface/elements.h"
@@ -52,29 +51,6 @@ fabvdb::surface::Shell sphere_shell() {
     return fabvdb::test::shell_of(fabvdb::test::make_sphere({0, 0, 0}, 20.0, 3), 1.0);
 }
 
-//! Edge-connected pieces of the triangles of `region`.
-int pieces(const fabvdb::surface::Shell& shell, const std::vector<int>& region_of_triangle, int region) {
-    std::vector<char> seen(shell.triangle_count(), 0);
-    int count = 0;
-    for (size_t start = 0; start < shell.triangle_count(); ++start) {
-        if (seen[start] || region_of_triangle[start] != region) continue;
-        ++count;
-        std::queue<int> queue;
-        queue.push(int(start));
-        seen[start] = 1;
-        while (!queue.empty()) {
-            const int t = queue.front();
-            queue.pop();
-            for (int u : shell.neighbor[t])
-                if (u >= 0 && !seen[u] && region_of_triangle[u] == region) {
-                    seen[u] = 1;
-                    queue.push(u);
-                }
-        }
-    }
-    return count;
-}
-
 }  // namespace
 
 TEST(RegionGrowing, PolesGrowIntoHemispheres) {
@@ -97,8 +73,8 @@ TEST(RegionGrowing, PolesGrowIntoHemispheres) {
         const Vec3& d = region == 0 ? top : bottom;
         cost -= n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
     }
-    EXPECT_EQ(pieces(sphere.shell, regions.region_of_triangle, 0), 1);
-    EXPECT_EQ(pieces(sphere.shell, regions.region_of_triangle, 1), 1);
+    EXPECT_EQ(fabvdb::test::connected_pieces(sphere.shell, regions.region_of_triangle, 0), 1);
+    EXPECT_EQ(fabvdb::test::connected_pieces(sphere.shell, regions.region_of_triangle, 1), 1);
     ASSERT_FALSE(regions.cost_per_iteration.empty());
     EXPECT_GE(regions.iterations, 1);
     const double half = 0.5 * double(sphere.shell.triangle_count());

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <queue>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,29 @@ inline int nearest_direction(const std::vector<Vec3>& directions, const Vec3& d)
         }
     }
     return best;
+}
+
+//! Edge-connected pieces of the triangles labelled `label`.
+inline int connected_pieces(const surface::Shell& shell, const std::vector<int>& label_of_triangle, int label) {
+    std::vector<char> seen(shell.triangle_count(), 0);
+    int count = 0;
+    for (size_t start = 0; start < shell.triangle_count(); ++start) {
+        if (seen[start] || label_of_triangle[start] != label) continue;
+        ++count;
+        std::queue<int> queue;
+        queue.push(int(start));
+        seen[start] = 1;
+        while (!queue.empty()) {
+            const int t = queue.front();
+            queue.pop();
+            for (int u : shell.neighbor[t])
+                if (u >= 0 && !seen[u] && label_of_triangle[u] == label) {
+                    seen[u] = 1;
+                    queue.push(u);
+                }
+        }
+    }
+    return count;
 }
 
 }  // namespace fabvdb::test
