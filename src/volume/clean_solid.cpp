@@ -12,6 +12,7 @@
 
 #include "volume/closed_manifold.h"
 #include "volume/crossing_pairs.h"
+#include "volume/memory_estimate.h"
 
 namespace fabvdb::volume {
 
@@ -59,7 +60,12 @@ bool is_one_shell(const Mesh& mesh) {
 //! also accepts a mesh turned wholly inside out (it bounds the unbounded
 //! complement), whose volume is negative.
 bool bounds_volume(const Mesh& mesh) {
-    if (signed_volume(mesh) <= 0.0) return false;
+    const double volume = signed_volume(mesh);
+    if (volume <= 0.0) return false;
+    // A flat shell (a sliver tetrahedron) bounds no volume worth the name: its
+    // mean thickness, 2 V / A, is under 1e-4 of its size (0.01 mm on a 100 mm
+    // part), too thin to print, and a ray test cannot tell its inside.
+    if (2.0 * volume / surface_area(mesh) < 1e-4 * bounding_box(mesh).diagonal()) return false;
     if (is_one_shell(mesh)) return true;
     // Only the vertices triangles use: CGAL's volume test fails on isolated ones.
     SurfaceMesh surface;

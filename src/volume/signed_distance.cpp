@@ -393,8 +393,8 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
     if (!encloses && options.thicken <= 0.0) {
         std::ostringstream message;
         message.precision(2);
-        message << options.input_name << ": encloses no volume (an open sheet, a single scan or a soup of "
-                << "unconnected triangles: the winding number reaches 0.9 beside only " << 100.0 * share
+        message << options.input_name << ": encloses no volume (an open sheet, a single scan, a flat sliver or a "
+                << "soup of unconnected triangles: the winding number reaches 0.9 beside only " << 100.0 * share
                 << "% of its surface); give a thickness (--thicken) to make it a solid sheet";
         throw Error(FABVDB_ERR_BAD_INPUT, message.str());
     }

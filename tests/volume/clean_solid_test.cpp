@@ -1,6 +1,6 @@
 // The clean-solid test: closed oriented solids pass; crossing shells,
 // wherever the crossing lies along the part (the self-intersection test runs
-// in slabs), open or inconsistently oriented surfaces fail. The meshes are
+// in slabs), open or inconsistently oriented surfaces and flat slivers fail. The meshes are
 // built by hand, so the expected answer is known without running any test.
 // With candidates, the crossings found are CGAL's self-intersections with a
 // candidate in them.
@@ -141,6 +141,24 @@ TEST(CleanSolid, OpenOrMisorientedSurfacesFail) {
                                           test::flipped(test::make_box({40, 0, 0}, {45, 5, 5}))),
                              progress)
                      .clean);
+}
+
+TEST(CleanSolid, FlatTetrahedraFailThinPlatesPass) {
+    Progress progress;
+    // A tetrahedron whose apex lies h above the base triangle (10 mm across,
+    // diagonal 14 mm): its mean thickness 2V/A is about h/3, so h = 1e-5 and
+    // 1e-3 mm are flat (under 1e-4 of the diagonal), 0.01 mm is not.
+    const auto tetrahedron = [](double h) {
+        Mesh mesh;
+        mesh.vertices = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {3, 3, h}};
+        mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+        return mesh;
+    };
+    EXPECT_TRUE(check_solid(tetrahedron(1.0), progress).clean);
+    EXPECT_TRUE(check_solid(tetrahedron(0.01), progress).clean);
+    EXPECT_FALSE(check_solid(tetrahedron(1e-3), progress).clean);
+    EXPECT_FALSE(check_solid(tetrahedron(1e-5), progress).clean);
+    EXPECT_TRUE(check_solid(test::make_box({0, 0, 0}, {60, 60, 0.1}), progress).clean);
 }
 
 TEST(CleanSolid, CancelledThrows) {
