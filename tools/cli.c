@@ -185,6 +185,18 @@ int cli_fail(const cli_run* run, fabvdb_status status) {
     return cli_exit_code(status);
 }
 
+int cli_part_count(const cli_run* run, const char* name, int* parts) {
+    const char* text = cli_get(run, name)->text;
+    *parts = 0;
+    if (strcmp(text, "auto") == 0) return CLI_EXIT_OK;
+    char* end = NULL;
+    const long count = strtol(text, &end, 10);
+    if (*text == '\0' || *end != '\0' || count < 1 || count > 1000)
+        return cli_usage_error(run, "%s must be auto or a whole number from 1 to 1000", name);
+    *parts = (int)count;
+    return CLI_EXIT_OK;
+}
+
 int cli_usage_error(const cli_run* run, const char* format, ...) {
     clear_progress_line();
     va_list args;

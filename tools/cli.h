@@ -89,6 +89,9 @@ extern const size_t cli_common_option_count;
 const cli_value* cli_get(const cli_run* run, const char* name);
 /* A length option in mm: relative ones are resolved against `diagonal`. */
 double cli_length_mm(const cli_run* run, const char* name, double diagonal);
+/* A part-count option "auto|N": 0 into *parts for auto, else N (1 to 1000).
+ * Returns CLI_EXIT_OK, or the usage error it printed. */
+int cli_part_count(const cli_run* run, const char* name, int* parts);
 
 /* Prints "fabvdb <command>: <status string>: <last error>" and returns the
  * exit code for `status`. */

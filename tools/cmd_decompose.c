@@ -3,8 +3,6 @@
  * each castable in a two-piece rigid mold, with a parting direction and a
  * parting line per part, then applies the user's edits (thesis chapter 3). */
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "commands.h"
 
@@ -38,14 +36,8 @@ static int run_decompose(cli_run* run) {
     options.smoothing_iterations = (int)cli_get(run, "--smoothing")->number;
     options.w_smooth = cli_get(run, "--smoothness")->number;
     if (cli_get(run, "--solid")->given) options.flags |= FABVDB_DECOMPOSE_SOLID;
-    const char* parts = cli_get(run, "--parts")->text;
-    if (strcmp(parts, "auto") != 0) {
-        char* end = NULL;
-        const long count = strtol(parts, &end, 10);
-        if (*parts == '\0' || *end != '\0' || count < 1 || count > 1000)
-            return cli_usage_error(run, "--parts must be auto or a whole number from 1 to 1000");
-        options.parts = (int)count;
-    }
+    const int parts_code = cli_part_count(run, "--parts", &options.parts);
+    if (parts_code != CLI_EXIT_OK) return parts_code;
 
     fabvdb_mesh* mesh = NULL;
     int code = cli_read_input(run, run->positional[0], &mesh);

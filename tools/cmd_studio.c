@@ -76,14 +76,8 @@ static int run_studio(cli_run* run) {
     decompose.draft_degrees = cli_get(run, "--draft")->number;
     decompose.low_res_triangles = (int)cli_get(run, "--low-res")->number;
     if (cli_get(run, "--solid")->given) decompose.flags |= FABVDB_DECOMPOSE_SOLID;
-    const char* parts = cli_get(run, "--parts")->text;
-    if (strcmp(parts, "auto") != 0) {
-        char* end = NULL;
-        const long count = strtol(parts, &end, 10);
-        if (*parts == '\0' || *end != '\0' || count < 1 || count > 1000)
-            return cli_usage_error(run, "--parts must be auto or a whole number from 1 to 1000");
-        decompose.parts = (int)count;
-    }
+    const int parts_code = cli_part_count(run, "--parts", &decompose.parts);
+    if (parts_code != CLI_EXIT_OK) return parts_code;
     if (!(decompose.gamma > 0)) return cli_usage_error(run, "--gamma must be positive");
     if (!(decompose.draft_degrees >= 0 && decompose.draft_degrees <= 30))
         return cli_usage_error(run, "--draft must be between 0 and 30 degrees");
