@@ -465,6 +465,7 @@ def main():
     args.mem_cap_bytes = parse_size(args.mem_cap)
     args.argv_text = " ".join(sys.argv[1:])
     args.checker = os.path.abspath(args.checker)
+    args.corpus = os.path.abspath(args.corpus)
     os.makedirs(os.path.join(args.out, "runs"), exist_ok=True)
     rows = read_manifest(args.corpus)
     if args.subset == "smallest20":

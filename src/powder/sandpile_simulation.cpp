@@ -251,7 +251,22 @@ int steepest_topple(const Frame& frame, const std::vector<uint8_t>& cells, const
     return best;
 }
 
+//! Whether the grain in cell `i` at (x, y, z) is buried: nothing below it
+//! nor beside it is free or outside, so it can neither fall nor topple.
+bool buried(const Frame& frame, const std::vector<uint8_t>& cells, size_t i, int x, int y, int z) {
+    const auto open = [&](size_t c) { return cells[c] == kFree || cells[c] == kOutside; };
+    if (z > 0 && open(i - 1)) return false;
+    for (const auto& d : kDirections)
+        if (frame.inside(x + d[0], y + d[1], z) && open(frame.index(x + d[0], y + d[1], z))) return false;
+    return true;
+}
+
 //! Runs falls and topples until the pile rests; returns how many grains left.
+//! Every pass visits the grains in order, as one sweep over all of them
+//! would, but skips the buried ones (a visit to them changes nothing): a
+//! grain is marked active until a visit finds it buried, and marked again
+//! when the cell below it or beside it is vacated. The pile's interior thus
+//! costs nothing per pass, only its surface does.
 size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose, int window, Progress& progress) {
     auto& cells = frame.cells();
     const auto& n = frame.size();
@@ -259,6 +274,37 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
     const ReposeSteps steps(tan_repose, window);
     const size_t removed_mark = SIZE_MAX;
     size_t removed = 0;
+
+    constexpr uint32_t kNoSlot = UINT32_MAX;
+    std::vector<uint32_t> slot_of(cells.size(), kNoSlot);
+    for (size_t g = 0; g < grains.size(); ++g) slot_of[grains[g]] = uint32_t(g);
+    std::vector<uint64_t> active((grains.size() + 63) / 64, ~uint64_t(0));
+    if (grains.size() % 64) active.back() = (uint64_t(1) << (grains.size() % 64)) - 1;
+    const auto deactivate = [&](size_t g) { active[g / 64] &= ~(uint64_t(1) << (g % 64)); };
+    // The grains that may move now that cell `c` (at x, y, z) is vacated.
+    const auto wake_around = [&](size_t c, int x, int y, int z) {
+        const auto wake = [&](size_t k) {
+            if (cells[k] == kGrain && slot_of[k] != kNoSlot) active[slot_of[k] / 64] |= uint64_t(1) << (slot_of[k] % 64);
+        };
+        if (z + 1 < n[2]) wake(c + 1);
+        for (const auto& d : kDirections)
+            if (frame.inside(x + d[0], y + d[1], z)) wake(frame.index(x + d[0], y + d[1], z));
+    };
+    // The next active grain at or after slot g, or grains.size().
+    const auto next_active = [&](size_t g) {
+        for (size_t w = g / 64; w < active.size(); ++w) {
+            uint64_t bits = active[w];
+            if (w == g / 64) bits &= ~uint64_t(0) << (g % 64);
+            if (bits) return w * 64 + size_t(__builtin_ctzll(bits));
+        }
+        return grains.size();
+    };
+    const auto coordinates = [&](size_t i, int& x, int& y, int& z) {
+        z = int(i % n[2]);
+        y = int((i / n[2]) % n[1]);
+        x = int(i / (column_stride * n[1]));
+    };
+
     // A grain that topples is above lower ground within `window` steps, so it
     // falls or leaves within that many passes unless the pile is only
     // jiggling: stop after that many passes with no fall and no exit.
@@ -266,42 +312,53 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
     for (size_t pass = 0; passes_without_descent <= window + 1; ++pass) {
         if (progress.cancelled()) break;
         size_t moved = 0, descended = 0;
-        for (size_t g = 0; g < grains.size(); ++g) {
+        for (size_t g = next_active(0); g < grains.size(); g = next_active(g + 1)) {
             size_t i = grains[g];
-            int z = int(i % n[2]), y = int((i / n[2]) % n[1]), x = int(i / (column_stride * n[1]));
+            const size_t from = i;
+            int x, y, z;
+            coordinates(i, x, y, z);
             if (fall(cells, i, z)) {
                 ++moved;
                 ++descended;
+                wake_around(from, x, y, int(from % n[2]));
                 if (cells[i] == kOutside) {
                     grains[g] = removed_mark;
+                    deactivate(g);
                     ++removed;
                     continue;
                 }
                 grains[g] = i;
+                slot_of[i] = uint32_t(g);
                 continue;
             }
             const int best = steepest_topple(frame, cells, steps, x, y, z, int((i * 2654435761u + pass) & 7u));
-            if (best < 0) continue;
+            if (best < 0) {
+                if (buried(frame, cells, i, x, y, z)) deactivate(g);
+                continue;
+            }
             const size_t j = frame.index(x + kDirections[best][0], y + kDirections[best][1], z);
             cells[i] = kFree;
             ++moved;
+            wake_around(i, x, y, z);
             if (cells[j] == kOutside) {
                 grains[g] = removed_mark;
+                deactivate(g);
                 ++removed;
                 ++descended;
                 continue;
             }
             cells[j] = kGrain;
             grains[g] = j;
-        }
-        if (removed) {
-            size_t kept = 0;
-            for (size_t g = 0; g < grains.size(); ++g)
-                if (grains[g] != removed_mark) grains[kept++] = grains[g];
-            grains.resize(kept);
+            slot_of[j] = uint32_t(g);
         }
         if (moved == 0) break;
         passes_without_descent = descended > 0 ? 0 : passes_without_descent + 1;
+    }
+    if (removed) {
+        size_t kept = 0;
+        for (size_t g = 0; g < grains.size(); ++g)
+            if (grains[g] != removed_mark) grains[kept++] = grains[g];
+        grains.resize(kept);
     }
     progress.check();
     return removed;

@@ -17,7 +17,9 @@
 //! finds no free cell near its place in the next turn's frame (a nearly full
 //! cavity voxelises to a few cells fewer in a turned frame) waits inside and
 //! is placed once the pile has moved. Reports the powder left inside after
-//! each turn. Cancellable (Error(CANCELLED)).
+//! each turn. Cancellable (Error(CANCELLED)). Cost: each pass of a settling
+//! visits only the grains that are not buried (the pile's surface); the
+//! passes grow with the powder that must leave through the holes.
 #pragma once
 
 #include <vector>
