@@ -6,20 +6,16 @@
 #include <iterator>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/Surface_mesh.h>
+
+#include "surface/cgal_surface_mesh.h"
 
 namespace fabvdb::surface {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using SurfaceMesh = CgalSurfaceMesh;
 using Halfedge = SurfaceMesh::Halfedge_index;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -34,15 +30,9 @@ double loop_diameter(const SurfaceMesh& surface, Halfedge border) {
 }  // namespace
 
 std::optional<FilledHoles> fill_small_holes(const Mesh& mesh, double max_diameter, Progress& progress) {
-    std::vector<Point> points;
-    points.reserve(mesh.vertices.size());
-    for (const Vec3& p : mesh.vertices) points.emplace_back(p[0], p[1], p[2]);
-    std::vector<std::vector<std::size_t>> polygons;
-    polygons.reserve(mesh.triangles.size());
-    for (const Triangle& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
-    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) return std::nullopt;
-    SurfaceMesh surface;
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, surface);
+    std::optional<SurfaceMesh> converted = to_cgal_surface_mesh(mesh);
+    if (!converted) return std::nullopt;
+    SurfaceMesh& surface = *converted;
 
     std::vector<Halfedge> borders;
     PMP::extract_boundary_cycles(surface, std::back_inserter(borders));
@@ -61,14 +51,9 @@ std::optional<FilledHoles> fill_small_holes(const Mesh& mesh, double max_diamete
         ++filled.holes;
         filled.added_triangles += faces.size();
     }
-    points.clear();
-    polygons.clear();
-    PMP::polygon_mesh_to_polygon_soup(surface, points, polygons);
-    for (const Point& p : points) filled.mesh.vertices.push_back({p.x(), p.y(), p.z()});
-    for (const auto& polygon : polygons) {
-        if (polygon.size() != 3) return std::nullopt;
-        filled.mesh.triangles.push_back({uint32_t(polygon[0]), uint32_t(polygon[1]), uint32_t(polygon[2])});
-    }
+    std::optional<Mesh> back = from_cgal_surface_mesh(surface);
+    if (!back) return std::nullopt;
+    filled.mesh = std::move(*back);
     return filled;
 }
 

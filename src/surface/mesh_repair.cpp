@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "surface/collapse_degenerate_triangles.h"
 #include "surface/fill_small_holes.h"
 #include "volume/clean_solid.h"
 #include "volume/mesh_shells.h"
@@ -54,6 +55,20 @@ std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& prog
         repair.mesh = std::move(*mesh);
         repair.shell_paths.assign(volume::split_shells(repair.mesh).size(), repair.path);
         return repair;
+    }
+    // Zero-area triangles flipped or collapsed away where the input is a
+    // 2-manifold: deleting them, as the soup repair below does, would leave
+    // slits.
+    if (std::optional<CollapsedDegenerates> collapsed = collapse_degenerate_triangles(input, progress)) {
+        std::vector<std::string> fixes{"removed " + std::to_string(collapsed->degenerate) +
+                                       " degenerate triangles by edge flips and collapses"};
+        if (std::optional<Mesh> mesh = clean_or_resolved(collapsed->mesh, fixes, progress)) {
+            repair.path = "mesh";
+            repair.fixes = std::move(fixes);
+            repair.mesh = std::move(*mesh);
+            repair.shell_paths.assign(volume::split_shells(repair.mesh).size(), repair.path);
+            return repair;
+        }
     }
     const Mesh oriented = volume::orient_soup(input, progress);
     if (oriented.triangles.empty()) return std::nullopt;

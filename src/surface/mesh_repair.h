@@ -3,7 +3,10 @@
 //!  1. The input itself when it is a clean solid (clean_solid.h), or with its
 //!     crossing triangles cut down to the union of its shells
 //!     (resolve_crossings.h) when crossings are its only defect.
-//!  2. Else the input welded at exactly coincident points, without
+//!  2. Else, when the input is a 2-manifold whose only defects are zero-area
+//!     triangles (and crossings), those flipped or collapsed away
+//!     (collapse_degenerate_triangles.h).
+//!  3. Else the input welded at exactly coincident points, without
 //!     degenerate and duplicate triangles, each piece consistently oriented
 //!     and inverted shells turned (orient_soup.h: CGAL's polygon-soup repair
 //!     and orientation), then shell by shell: a shell is kept when it is

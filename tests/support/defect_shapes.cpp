@@ -39,4 +39,19 @@ Mesh make_triangle_soup(uint32_t count, double side, double spread, unsigned see
     return soup;
 }
 
+Mesh make_box_with_cap(const Vec3& lo, const Vec3& hi) {
+    Mesh mesh = make_box(lo, hi);
+    // make_box's first triangle is (0, 2, 3): split its edge 0 -> 2 at m.
+    const Triangle split = mesh.triangles[0];
+    const uint32_t a = split[0], b = split[1], x = split[2];
+    const uint32_t m = uint32_t(mesh.vertices.size());
+    const Vec3& pa = mesh.vertices[a];
+    const Vec3& pb = mesh.vertices[b];
+    mesh.vertices.push_back({0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2])});
+    mesh.triangles[0] = {a, m, x};
+    mesh.triangles.push_back({m, b, x});
+    mesh.triangles.push_back({a, b, m});
+    return mesh;
+}
+
 }  // namespace fabvdb::test

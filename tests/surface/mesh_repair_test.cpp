@@ -2,13 +2,16 @@
 // untouched; an unwelded, partly flipped sphere with duplicate and
 // degenerate triangles comes back closed, clean and made of input triangles
 // only; a small hole is filled with a faired patch; two crossing boxes come
-// back as their union; an open box is left to the volumetric path. Checked with the test support's own checkers.
+// back as their union; a zero-area cap is flipped away, not re-meshed; an
+// open box is left to the volumetric path. Checked with the test support's own checkers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <set>
+#include <string>
 
+#include "support/defect_shapes.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 #include "surface/mesh_repair.h"
@@ -114,6 +117,19 @@ TEST(MeshRepair, SmallHoleIsFilledKeepingEveryTriangle) {
     EXPECT_GE(repaired->mesh.triangles.size(), sphere.triangles.size());
     EXPECT_NE(repaired->fixes.back().find("filled 1 small holes"), std::string::npos) << repaired->fixes.back();
     expect_input_triangles(holed, repaired->mesh);  // every input triangle is still there
+}
+
+TEST(MeshRepair, ZeroAreaCapIsFlippedAway) {
+    const Mesh capped = fabvdb::test::make_box_with_cap({0, 0, 0}, {10, 10, 10});
+    fabvdb::Progress progress;
+    const auto repaired = fabvdb::surface::repair_at_mesh_level(capped, progress);
+    ASSERT_TRUE(repaired);
+    EXPECT_EQ(repaired->path, "mesh");
+    ASSERT_EQ(repaired->fixes.size(), 1u);
+    EXPECT_NE(repaired->fixes[0].find("1 degenerate triangles"), std::string::npos) << repaired->fixes[0];
+    expect_clean_solid(repaired->mesh);
+    EXPECT_LE(repaired->mesh.triangles.size(), capped.triangles.size());
+    EXPECT_NEAR(fabvdb::test::mesh_volume(repaired->mesh), 1000.0, 1e-9);
 }
 
 TEST(MeshRepair, LargeHolesAreLeftToTheVolumetricPath) {
