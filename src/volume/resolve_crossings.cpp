@@ -48,11 +48,30 @@ struct Refined {
     std::unordered_set<uint64_t> cut_edges;  //!< edge_key(a, b) and (b, a) of every edge along a cut
 };
 
+//! Whether a corner of b that is not a corner of a lies exactly in a's
+//! plane (exact predicate): b touches a there, or lies in its plane.
+bool touches_plane(const Mesh& mesh, uint32_t a, uint32_t b) {
+    const Triangle& s = mesh.triangles[a];
+    const Triangle& t = mesh.triangles[b];
+    for (int k = 0; k < 3; ++k) {
+        if (t[k] == s[0] || t[k] == s[1] || t[k] == s[2]) continue;
+        if (CGAL::orientation(point(mesh.vertices[s[0]]), point(mesh.vertices[s[1]]), point(mesh.vertices[s[2]]),
+                              point(mesh.vertices[t[k]])) == CGAL::COPLANAR)
+            return true;
+    }
+    return false;
+}
+
 //! Splits the crossing triangles (only them: every triangle a cut passes
 //! through crosses another) by CGAL's autorefinement. Each side of a cut
 //! keeps its own copies of the cut points, so the result is still a closed
-//! oriented manifold by its indices.
+//! oriented manifold by its indices. Nothing when a corner of one crossing
+//! triangle lies exactly in the other's plane (a flat fold, a vertex on a
+//! face): CGAL 5.5's autorefinement crashes on such inputs (corpus
+//! brucewick.obj, egret.ply).
 std::optional<Refined> refine(const Mesh& mesh, const std::vector<std::pair<uint32_t, uint32_t>>& crossings) {
+    for (const auto& [a, b] : crossings)
+        if (touches_plane(mesh, a, b) || touches_plane(mesh, b, a)) return std::nullopt;
     std::vector<char> crossing(mesh.triangles.size(), 0);
     for (const auto& [a, b] : crossings) crossing[a] = crossing[b] = 1;
     SurfaceMesh part;

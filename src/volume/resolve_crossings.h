@@ -14,7 +14,9 @@
 //! vertex): each sheet there gets its own copy of the vertex, moved 1% of
 //! the way to the centre of its ring, so that the sheets part.
 //! Returns nothing (the caller repairs instead) when the crossings are too
-//! many for this to pay (more than `max_crossing_pairs`), when a cut does
+//! many for this to pay (more than `max_crossing_pairs`), when a corner of
+//! one crossing triangle lies exactly in the other's plane (a flat fold, a
+//! vertex on a face: CGAL's autorefinement fails on those), when a cut does
 //! not part the surface (it ends inside a patch) or the winding numbers of
 //! the patches on its two sides do not differ by one, when no ray per patch
 //! is decisive, or when the result is not itself a clean solid (check_solid,
