@@ -6,6 +6,7 @@
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include "core/error.h"
+#include "volume/part_coincident_vertices.h"
 
 namespace fabvdb::volume {
 
@@ -38,6 +39,7 @@ Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& p
             mesh.triangles.push_back({q[3], q[2], q[1]});
         }
     }
+    part_coincident_vertices(mesh);
     progress.update(1.0);
     return mesh;
 }

@@ -2,7 +2,9 @@
 //! Takes a FloatGrid level set (world units mm, negative inside) and an
 //! adaptivity in [0, 1] (0: uniform, every voxel crossing gives a vertex);
 //! returns OpenVDB's `volumeToMesh` surface with quads split along their
-//! shorter diagonal, triangles oriented outward, vertices shared. An empty
+//! shorter diagonal, triangles oriented outward, vertices shared, no two
+//! at one position (where sheets touch at a point, each copy is moved 1% of
+//! the way toward the centre of its ring, into its own sheet). An empty
 //! level set gives an empty mesh. Checks cancellation between stages.
 #pragma once
 
