@@ -132,17 +132,15 @@ static int run_drain(cli_run* run) {
     if (status != FABVDB_OK) return cli_fail(run, status);
     status = fabvdb_mesh_write(run->ctx, drilled, output->text);
     fabvdb_mesh_free(drilled);
-    double cavities = 0;
-    fabvdb_report_number(run->ctx, report, "/cavity_count", &cavities);
-    if (status == FABVDB_OK) {
-        cli_note(run, "wrote %s", output->text);
-        if (drain.heatmap_path && cavities > 0)
-            cli_note(run, "wrote %s, the powder-left map and their legends beside it", drain.heatmap_path);
-    }
     if (status != FABVDB_OK) {
         fabvdb_report_free(report);
         return cli_fail(run, status);
     }
+    double cavities = 0;
+    fabvdb_report_number(run->ctx, report, "/cavity_count", &cavities);
+    cli_note(run, "wrote %s", output->text);
+    if (drain.heatmap_path && cavities > 0)
+        cli_note(run, "wrote %s, the powder-left map and their legends beside it", drain.heatmap_path);
     const int written = cli_write_report(run, report);
     if (written != CLI_EXIT_OK) {
         fabvdb_report_free(report);

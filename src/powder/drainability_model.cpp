@@ -279,7 +279,9 @@ void DrainabilityModel::walk_above_surface(const DrainHole& hole, uint32_t sourc
     const Vec3& gravity = turns_[turn].gravity;
     const SublevelForest& forest = later_forests_[turn];
     const Relief& relief = later_relief_[turn];
-    if (source == kNoSample || !absorbing(hole, gravity)) return;
+    // A source in another cavity (the hole's nearest sample across a thin
+    // wall) drains nothing of this one.
+    if (source == kNoSample || later_cavity_[source] != hole.cavity || !absorbing(hole, gravity)) return;
     // Powder can drain only if it reaches the mouth without climbing (the
     // source's ancestors) and lies above the crater's cone; past the highest
     // such sample nothing more drains.
@@ -289,7 +291,10 @@ void DrainabilityModel::walk_above_surface(const DrainHole& hole, uint32_t sourc
     std::vector<float> surface(later_grid_.size(), -kUnreached);
     const Cone crater = cone(hole, gravity);
     float top = -kUnreached;
-    for (uint32_t a = source;; a = forest.parent[a]) {
+    // The walk stays in the hole's cavity: the sample grid's neighbours may
+    // reach across a wall thinner than its stride into another cavity, whose
+    // samples count as walls here.
+    for (uint32_t a = source; later_cavity_[a] == hole.cavity; a = forest.parent[a]) {
         surface[a] = kUnreached;
         if (!crater.below(powder_.position[later_grid_.sample[a]])) top = std::max(top, relief.height[a]);
         if (forest.parent[a] == a) break;
