@@ -17,7 +17,8 @@
 //       the same validity measures on a corpus input (is it a clean solid?).
 //   corpus_check cover IN --fit LEN PART.stl...
 //       distance from the input surface to the nearest of the parts (mold
-//       faithfulness): max and area-weighted mean, mm, and the input diagonal.
+//       faithfulness): max (and where it is) and area-weighted mean, mm, and
+//       the input diagonal.
 //   corpus_check decomposition D.json
 //       tests/support's decomposition checks (ownership, pieces, energies).
 //
@@ -225,6 +226,7 @@ std::vector<uint32_t> all_triangles(const Mesh& mesh) {
 struct Distances {
     double max = 0, mean = 0;
     size_t samples = 0;
+    Vec3 max_at{0, 0, 0};  //!< the point farthest from the targets
 };
 
 //! Distances from `points` to the triangles `targets` of the meshes.
@@ -236,7 +238,10 @@ Distances distances(const std::vector<Vec3>& points, const std::vector<Triangle3
     double sum = 0;
     for (const Vec3& p : points) {
         const double r = std::sqrt(tree.squared_distance(Kernel::Point_3(p[0], p[1], p[2])));
-        d.max = std::max(d.max, r);
+        if (r > d.max) {
+            d.max = r;
+            d.max_at = p;
+        }
         sum += r;
     }
     d.samples = points.size();
@@ -460,6 +465,7 @@ json check_cover(int argc, char** argv) {
     return {{"parts", count},
             {"diagonal", diagonal},
             {"max", max.max},
+            {"max_at", {max.max_at[0], max.max_at[1], max.max_at[2]}},
             {"mean", mean.mean},
             {"max_ratio", max.max / diagonal},
             {"mean_ratio", mean.mean / diagonal}};
