@@ -2,6 +2,7 @@
 //! computed in parallel over the parts.
 #include "surface/coarse_decomposition.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <tbb/parallel_for.h>
@@ -27,8 +28,11 @@ std::vector<PartMolding> parting_lines(const Shell& shell, const MoldabilityTerm
 Decomposition coarse_decomposition(const Shell& shell, const MoldabilityTerms& terms,
                                    const DecompositionOptions& options, nlohmann::json& log, Progress& progress) {
     const Elements elements = make_elements(shell, {}, std::vector<char>(shell.triangle_count(), 1));
-    const int first = options.parts > 0 ? options.parts : 2;
-    const int last = options.parts > 0 ? options.parts : options.max_parts;
+    // Regions are connected: a surface of several pieces needs two parts
+    // each (a closed piece as one part traps its core), whatever was asked.
+    const int pieces = int(connected_pieces(elements).size());
+    const int first = std::max(options.parts > 0 ? options.parts : 2, pieces > 1 ? 2 * pieces : 1);
+    const int last = std::max(options.parts > 0 ? options.parts : options.max_parts, first);
     Decomposition best;
     double best_energy = 1e300;
     for (int count = first; count <= last; ++count) {

@@ -143,8 +143,7 @@ int closest_direction(const MoldabilityTerms& terms, const Vec3& v) {
     return best;
 }
 
-void random_seeds(const Shell& shell, const MoldabilityTerms& terms, const Elements& elements, int count,
-                  std::vector<int>& seeds, std::vector<int>& directions) {
+std::vector<std::vector<int>> connected_pieces(const Elements& elements) {
     const size_t element_count = elements.triangles.size();
     std::vector<int> piece(element_count, -1);
     std::vector<std::vector<int>> pieces;
@@ -164,6 +163,13 @@ void random_seeds(const Shell& shell, const MoldabilityTerms& terms, const Eleme
                 }
         }
     }
+    return pieces;
+}
+
+void random_seeds(const Shell& shell, const MoldabilityTerms& terms, const Elements& elements, int count,
+                  std::vector<int>& seeds, std::vector<int>& directions) {
+    const size_t element_count = elements.triangles.size();
+    const std::vector<std::vector<int>> pieces = connected_pieces(elements);
     std::mt19937 generator(20190101u + unsigned(count));
     seeds.clear();
     std::vector<char> taken(element_count, 0);
@@ -174,6 +180,16 @@ void random_seeds(const Shell& shell, const MoldabilityTerms& terms, const Eleme
     for (const auto& members : pieces)
         if (int(seeds.size()) < count)
             take(members[std::uniform_int_distribution<size_t>(0, members.size() - 1)(generator)]);
+    // A closed piece as one region is no two-piece mold (its shell traps the
+    // core): with several pieces, each gets a second seed while count allows.
+    if (pieces.size() > 1)
+        for (const auto& members : pieces) {
+            if (int(seeds.size()) >= count || members.size() < 2) continue;
+            int e;
+            do e = members[std::uniform_int_distribution<size_t>(0, members.size() - 1)(generator)];
+            while (taken[e]);
+            take(e);
+        }
     const size_t available = std::min<size_t>(size_t(count), element_count);
     while (seeds.size() < available) {
         const int e = int(std::uniform_int_distribution<size_t>(0, element_count - 1)(generator));

@@ -30,8 +30,13 @@ Regions grow_regions(const Shell& shell, const MoldabilityTerms& terms, const El
                      std::vector<int> seeds, std::vector<int> directions, double overlap_weight,
                      int max_iterations, Progress& progress);
 
+//! The connected pieces of the domain: elements joined by adjacency, each
+//! piece's elements in the order they are reached.
+std::vector<std::vector<int>> connected_pieces(const Elements& elements);
+
 //! `count` seed elements drawn with a fixed-seed generator (reproducible runs),
-//! at least one in each connected piece of the domain while count allows; the
+//! at least one in each connected piece of the domain while count allows (two
+//! when there are several pieces: a closed piece needs two parts); the
 //! initial direction of each is the candidate closest to its triangle normal.
 void random_seeds(const Shell& shell, const MoldabilityTerms& terms, const Elements& elements, int count,
                   std::vector<int>& seeds, std::vector<int>& directions);

@@ -1,5 +1,6 @@
 //! low_res_surface: extract_mesh, then CGAL isotropic remeshing at the edge
-//! length that gives the target triangle count on the extracted area.
+//! length that gives the target triangle count on the extracted area, then
+//! the crumbs dropped.
 #include "volume/low_res_surface.h"
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "core/error.h"
 #include "volume/extract_mesh.h"
 #include "volume/memory_estimate.h"
+#include "volume/mesh_shells.h"
 
 namespace fabvdb::volume {
 
@@ -57,6 +59,10 @@ Mesh low_res_surface(const openvdb::FloatGrid& grid, size_t target_triangles, Pr
         for (const auto v : vertices_around_face(surface.halfedge(f), surface)) t[k++] = uint32_t(v.idx());
         result.triangles.push_back(t);
     }
+    // Crumbs: sub-voxel bubbles of the level set, a few triangles each, that
+    // no part could be made of.
+    drop_small_mesh_shells(result, std::pow(0.5 * edge, 3));
+    if (result.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the level set has no surface");
     progress.update(1.0);
     return result;
 }

@@ -1,8 +1,10 @@
 //! The low-resolution surface S_low of the mold decomposition (thesis §3.4.2):
 //! the zero iso-surface of a level set, extracted and then remeshed
 //! isotropically (CGAL) to about `target_triangles` well-shaped triangles.
-//! Guarantees an outward-oriented triangle mesh of the level set's surface
-//! (closed wherever the level set is); cancellable between stages.
+//! Its shells enclosing less than (edge / 2)³ at the remeshing edge length
+//! (crumbs: sub-voxel bubbles of the level set, a few triangles each) are
+//! dropped. Guarantees an outward-oriented triangle mesh of the level set's
+//! surface (closed wherever the level set is); cancellable between stages.
 #pragma once
 
 #include <cstddef>

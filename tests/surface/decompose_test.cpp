@@ -4,7 +4,8 @@
 // connectivity, the overhang term evaluated from the written surface, the
 // boundary length and turning), never with numbers the decomposition
 // reported about itself alone. Boundary smoothing is compared with the same
-// decomposition left unsmoothed.
+// decomposition left unsmoothed. Two separate balls get parts of their own,
+// every triangle owned.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "surface/decompose.h"
 #include "surface/decomposition_io.h"
 #include "support/decomposition_checks.h"
+#include "support/shapes.h"
 
 namespace {
 
@@ -28,9 +30,8 @@ struct Written {
     std::vector<Vec3> corners;  // outer vertices, then inner vertices
 };
 
-Written run_and_read(const std::string& mesh_name, const std::string& folder, int smoothing_iterations = 10) {
+Written run_and_read_mesh(const Mesh& input, const std::string& folder, int smoothing_iterations = 10) {
     fabvdb::Progress progress;
-    const Mesh input = fabvdb::io::read_mesh(std::string(FABVDB_SHARED_DATA "/meshes/") + mesh_name, progress);
     fabvdb::surface::DecomposeSettings settings;
     settings.shell.target_triangles = 1500;
     const fabvdb::BoundingBox box = fabvdb::bounding_box(input);
@@ -45,6 +46,12 @@ Written run_and_read(const std::string& mesh_name, const std::string& folder, in
     for (const auto& v : w.doc["low_res_surface"]["vertices"]) w.corners.push_back(v.get<Vec3>());
     for (const auto& v : w.doc["low_res_surface"]["inner_vertices"]) w.corners.push_back(v.get<Vec3>());
     return w;
+}
+
+Written run_and_read(const std::string& mesh_name, const std::string& folder, int smoothing_iterations = 10) {
+    fabvdb::Progress progress;
+    const Mesh input = fabvdb::io::read_mesh(std::string(FABVDB_SHARED_DATA "/meshes/") + mesh_name, progress);
+    return run_and_read_mesh(input, folder, smoothing_iterations);
 }
 
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -81,6 +88,27 @@ TEST(Decompose, SphereSplitsInTwoHalvesNearAGreatCircle) {
     EXPECT_GT(points, 10u);
     EXPECT_LT(double(w.doc["total_moldability_energy"]), double(w.doc["gamma"]));
     std::filesystem::remove_all(folder);
+}
+
+TEST(Decompose, SeparateBallsGetPartsOfTheirOwn) {
+    const std::string folder = std::filesystem::temp_directory_path() / "fabvdb_decompose_two_balls";
+    const Mesh balls = fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 10.0, 3),
+                                            fabvdb::test::make_sphere({30, 0, 0}, 6.0, 3));
+    const Written w = run_and_read_mesh(balls, folder);
+    // Every low-res triangle in a part (check_decomposition), and no part
+    // spans both balls (parts are connected).
+    const std::vector<double> areas = check_decomposition(w);
+    EXPECT_GE(areas.size(), 2u);
+    std::vector<int> side_of_part(areas.size(), -1);
+    const auto triangles = w.doc["low_res_surface"]["triangles"];
+    const auto part_of = w.doc["part_of_triangle"].get<std::vector<int>>();
+    for (size_t t = 0; t < part_of.size(); ++t) {
+        const int side = w.corners[triangles[t][0].get<uint32_t>()][0] > 15.0 ? 1 : 0;
+        ASSERT_GE(part_of[t], 0);
+        int& known = side_of_part[size_t(part_of[t])];
+        if (known < 0) known = side;
+        EXPECT_EQ(known, side) << "part " << part_of[t] << " spans both balls";
+    }
 }
 
 TEST(Decompose, TorusSplitsInTwoMoldableParts) {
