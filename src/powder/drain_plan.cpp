@@ -2,6 +2,7 @@
 #include "powder/drain_plan.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/icosphere.h"
@@ -64,8 +65,13 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     const std::vector<DrainHole> candidates =
         hole_candidates(plan.patches, shell, part, options.keep_out, candidate_options, progress);
     plan.candidate_count = candidates.size();
-    if (candidates.empty())
-        throw Error(FABVDB_ERR_BAD_INPUT, "no site lets a drain hole of this diameter pass cleanly through the wall");
+    if (candidates.empty()) {
+        std::ostringstream message;
+        message << "input: no site on its cavities lets a drain hole of " << options.hole_diameter
+                << " mm pass cleanly through the wall (the cavities are too small or thin for it; a smaller hole "
+                   "diameter may fit)";
+        throw Error(FABVDB_ERR_BAD_INPUT, message.str());
+    }
     clock.lap("hole candidates");
 
     DrainabilityOptions model_options;

@@ -1,6 +1,7 @@
 //! The powder of a full cavity, dropped in the first orientation: samples the
 //! cavity (the inside of its level set) on a regular grid of about
-//! `max_samples` points, drops each along gravity onto the cavity surface
+//! `max_samples` points (a cavity one voxel thin that this grid misses is
+//! sampled at its own voxels), drops each along gravity onto the cavity surface
 //! (Embree) and follows the settle matrix to the patch where it comes to rest.
 //! Every sample stands for `sample_volume` mm³ of powder; their sum is the
 //! cavity volume to within the sampling. Each sample keeps its grid cell

@@ -4,7 +4,7 @@
 // against the void's own volume; a solid sphere is hollowed with the wall;
 // with automatic holes the bunny's prediction ends under the target; over
 // the shared models the search, the routine and the heat map agree with
-// the one prediction.
+// the one prediction; a void one voxel thin is drained, not refused.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,6 +42,19 @@ TEST(DrainPart, HollowInputKeepsItsOwnCavity) {
     EXPECT_EQ(result.plan.holes.size(), 2u);
     for (const auto& hole : result.plan.holes)
         EXPECT_NEAR(std::hypot(hole.center[0], std::hypot(hole.center[1], hole.center[2])), 10.0, 0.6);
+}
+
+TEST(DrainPart, VoidOneVoxelThinIsDrained) {
+    // A 30 x 30 x 10 box around a 20 x 20 x 0.5 flat void, at 0.5 mm voxels.
+    const fabvdb::Mesh inner = fabvdb::test::make_box({-10, -10, 4.75}, {10, 10, 5.25});
+    const fabvdb::Mesh shell = fabvdb::test::merged(fabvdb::test::make_box({-15, -15, 0}, {15, 15, 10}),
+                                                    fabvdb::test::flipped(inner));
+    ASSERT_TRUE(fabvdb::powder::is_hollow_shell(shell));
+    fabvdb::Progress progress;
+    const auto result = fabvdb::powder::drain_part(shell, small_drain(1), progress);
+    EXPECT_TRUE(result.has_cavity);
+    EXPECT_EQ(result.plan.holes.size(), 1u);
+    EXPECT_GT(result.plan.evaluation.total_volume, 0.0);
 }
 
 TEST(DrainPart, SolidInputIsHollowedWithTheWall) {
