@@ -12,7 +12,9 @@
 //   corpus_check solid FILE [--reference IN --fit LEN] [--cavity-wall] [--direction X,Y,Z]
 //       validity of FILE; with --reference, sampled distances input<->FILE (mm);
 //       --cavity-wall: distances from the cavity shells to the outer shells
-//       (the wall as built); --direction: the double-height-field ray test.
+//       (the wall as built; with --reference, void shells lying on the
+//       input's surface are the input's own, not cavities made, and count
+//       on the walls' outer side); --direction: the double-height-field ray test.
 //   corpus_check input IN --fit LEN
 //       the same validity measures on a corpus input (is it a clean solid?).
 //   corpus_check cover IN --fit LEN PART.stl...
@@ -388,11 +390,45 @@ json check_solid(int argc, char** argv) {
     }
     if (flag(argc, argv, "--cavity-wall") && out["valid"].get<bool>()) {
         const auto volume = shell_volumes(mesh, labels, sign.size());
+        // A void shell lying on the input's surface (the median distance of
+        // its vertices to it under 1% of the diagonal: kept as it was, or as
+        // a repair rebuilt it, while a cavity made lies a wall deep) is the
+        // input's own void: the cavities made are the others, and their wall
+        // is measured to the outer shells and the input's voids alike.
+        std::vector<char> made(volume.size(), 0);
+        for (size_t s = 0; s < volume.size(); ++s) made[s] = volume[s] < 0;
+        size_t own_voids = 0;
+        if (!reference.empty()) {
+            const Mesh input = read_input(reference, std::stod(option(argc, argv, "--fit", "0")));
+            const auto input_triangles = triangles_of(input, all_triangles(input));
+            Tree input_tree(input_triangles.begin(), input_triangles.end());
+            input_tree.accelerate_distance_queries();
+            std::vector<std::vector<double>> depth(volume.size());
+            std::vector<char> seen(mesh.vertices.size(), 0);
+            for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+                if (!made[labels[i]]) continue;
+                for (uint32_t v : mesh.triangles[i]) {
+                    if (seen[v]) continue;
+                    seen[v] = 1;
+                    const Vec3& p = mesh.vertices[v];
+                    depth[labels[i]].push_back(std::sqrt(input_tree.squared_distance(Kernel::Point_3(p[0], p[1], p[2]))));
+                }
+            }
+            for (size_t s = 0; s < volume.size(); ++s) {
+                if (!made[s] || depth[s].empty()) continue;
+                std::nth_element(depth[s].begin(), depth[s].begin() + long(depth[s].size() / 2), depth[s].end());
+                if (depth[s][depth[s].size() / 2] < 0.01 * box.diagonal()) {
+                    made[s] = 0;
+                    ++own_voids;
+                }
+            }
+        }
         std::vector<uint32_t> cavity, outer;
         size_t cavities = 0;
-        for (size_t s = 0; s < volume.size(); ++s) cavities += volume[s] < 0;
-        for (uint32_t i = 0; i < mesh.triangles.size(); ++i) (volume[labels[i]] < 0 ? cavity : outer).push_back(i);
+        for (size_t s = 0; s < volume.size(); ++s) cavities += made[s];
+        for (uint32_t i = 0; i < mesh.triangles.size(); ++i) (made[labels[i]] ? cavity : outer).push_back(i);
         out["cavity_shells"] = cavities;
+        out["input_void_shells"] = own_voids;
         if (!cavity.empty()) {
             // The wall as built: from every cavity point to the nearest outer surface.
             const auto points = surface_samples(mesh, cavity, kSamples, true);
