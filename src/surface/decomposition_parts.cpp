@@ -34,14 +34,16 @@ std::vector<Vec3> points(const nlohmann::json& array, const std::string& name, c
     return result;
 }
 
-//! Every directed edge used once and its reverse once.
+//! Every directed edge used as often as its reverse: the surface bounds a
+//! volume (a part touching itself along a prism edge has four triangles
+//! there; the level sets made from it take that as it is).
 bool closed(const Mesh& mesh) {
     std::map<std::pair<uint32_t, uint32_t>, int> directed;
     for (const Triangle& t : mesh.triangles)
         for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
     for (const auto& [edge, count] : directed) {
         const auto reverse = directed.find({edge.second, edge.first});
-        if (count != 1 || reverse == directed.end() || reverse->second != 1) return false;
+        if (reverse == directed.end() || reverse->second != count) return false;
     }
     return !mesh.triangles.empty();
 }

@@ -4,7 +4,9 @@
 //! part's surface with its corner ids resolved to positions). Validates
 //! everything it uses and that the document belongs to the input mesh: the
 //! format and version, every index in range, every part referenced by
-//! part_of_triangle present and each part's surface closed, and the
+//! part_of_triangle present and each part's surface closed (every edge run
+//! as often one way as the other: where a part's boundary passes twice
+//! through a vertex, four side triangles share that prism edge), and the
 //! low-resolution surface lying on the input's surface (a decomposition of
 //! another model, or of this one at another scale, does not). Pure functions
 //! but for reading the file.
