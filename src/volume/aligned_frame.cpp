@@ -1,6 +1,7 @@
 //! The frame aligned with a direction (see aligned_frame.h).
 #include "volume/aligned_frame.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -15,9 +16,13 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
+//! v over its length; scaled by its largest coordinate first, so lengths
+//! whose square under- or overflows a double are fine.
 Vec3 normalized(const Vec3& v) {
-    const double length = std::sqrt(dot(v, v));
-    return {v[0] / length, v[1] / length, v[2] / length};
+    const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+    const Vec3 scaled{v[0] / largest, v[1] / largest, v[2] / largest};
+    const double length = std::sqrt(dot(scaled, scaled));
+    return {scaled[0] / length, scaled[1] / length, scaled[2] / length};
 }
 
 }  // namespace
@@ -31,8 +36,9 @@ Vec3 AlignedFrame::to_world(const Vec3& local) const {
 }
 
 AlignedFrame aligned_frame(const Vec3& direction) {
-    const double length = std::sqrt(dot(direction, direction));
-    if (!std::isfinite(length) || length == 0.0)
+    const double largest = std::max({std::abs(direction[0]), std::abs(direction[1]), std::abs(direction[2])});
+    if (!std::isfinite(direction[0]) || !std::isfinite(direction[1]) || !std::isfinite(direction[2]) ||
+        largest == 0.0)
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the parting direction must be a finite non-zero vector");
     AlignedFrame frame;
     frame.d = normalized(direction);
