@@ -15,6 +15,15 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' |
 
 constexpr size_t progress_every_lines = 4096;
 
+//! The token without a leading '+' (which from_chars does not take); empty
+//! (so not a number) when another sign follows it.
+std::string_view without_plus(std::string_view token) {
+    if (token.empty() || token.front() != '+') return token;
+    token.remove_prefix(1);
+    if (!token.empty() && (token.front() == '-' || token.front() == '+')) return {};
+    return token;
+}
+
 }  // namespace
 
 TextScanner::TextScanner(std::string_view text, std::string path, TextSyntax syntax, Progress& progress)
@@ -105,8 +114,7 @@ std::string_view TextScanner::expect_token_in_line(const char* what) {
 }
 
 double TextScanner::parse_double(std::string_view token, const char* what) const {
-    std::string_view digits = token;
-    if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+    const std::string_view digits = without_plus(token);
     double value = 0.0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (error == std::errc::result_out_of_range && end == digits.data() + digits.size()) {
@@ -122,8 +130,7 @@ double TextScanner::parse_double(std::string_view token, const char* what) const
 }
 
 int64_t TextScanner::parse_integer(std::string_view token, const char* what) const {
-    std::string_view digits = token;
-    if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+    const std::string_view digits = without_plus(token);
     int64_t value = 0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (error == std::errc::result_out_of_range)
