@@ -3,7 +3,8 @@
 //! isotropically (CGAL) to about `target_triangles` well-shaped triangles.
 //! Its shells enclosing less than (edge / 2)³ at the remeshing edge length
 //! (crumbs: sub-voxel bubbles of the level set, a few triangles each) are
-//! dropped. Guarantees an outward-oriented triangle mesh of the level set's
+//! dropped, and so are its voids (inward shells: a cast part cannot hold a
+//! closed void, the decomposition fills them). Guarantees an outward-oriented triangle mesh of the level set's
 //! surface (closed wherever the level set is); cancellable between stages.
 #pragma once
 
