@@ -36,6 +36,13 @@ Shells split_shells(const Mesh& mesh) {
     return shells;
 }
 
+//! Whether any value of the level set lies inside (below zero).
+bool holds_inside(const openvdb::FloatGrid& grid) {
+    for (auto value = grid.cbeginValueAll(); value; ++value)
+        if (*value < 0.0f) return true;
+    return false;
+}
+
 openvdb::FloatGrid::Ptr level_set_of(const Mesh& closed, double voxel) {
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
@@ -103,9 +110,16 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         result.drilled = std::move(shells_mesh);
         return result;
     }
+    const openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
+    if (!holds_inside(*cavity)) {
+        result.warnings.push_back(options.input_name +
+                                  ": the part's voids are thinner than a voxel, so no powder is trapped: no drain "
+                                  "holes are needed and the part is returned undrilled");
+        result.drilled = std::move(shells_mesh);
+        return result;
+    }
     result.has_cavity = true;
     const openvdb::FloatGrid::Ptr part = level_set_of(shells.outer, voxel);
-    const openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
     result.shell = openvdb::tools::csgDifferenceCopy(*part, *cavity);
     progress.check();
     lap("level sets");
