@@ -23,7 +23,7 @@ NearestTriangle::Query::Query(const NearestTriangle& search, bool descend)
 NearestTriangle::Result NearestTriangle::Query::operator()(const openvdb::Vec3d& p) {
     candidates_.clear();
     considered_.clear();
-    const openvdb::Coord center = search_.hints_.transform().worldToIndexNodeCentered(p);
+    const openvdb::Coord center = search_.hints_.transform().worldToIndexCellCentered(p);
     // Neighbouring voxels mostly share their hint: keep each once.
     const auto add = [&](openvdb::Int32 triangle) {
         if (triangle >= 0 && size_t(triangle) < search_.mesh_.triangles.size() &&

@@ -1,6 +1,7 @@
 //! The triangle of a mesh nearest to a point, and the point on it, found
 //! from hints: the nearest triangles an index grid records in the 27 voxels
-//! around the point (as a mesh-to-volume conversion leaves them), then, while
+//! around the point (centred on the voxel whose centre is nearest, as a
+//! mesh-to-volume conversion leaves them), then, while
 //! the best one's nearest point lies on its edge or corner, a descent over the
 //! triangles around its corners for as long as it gets nearer. Exact when the
 //! true nearest triangle is among the hints or reachable by that descent (the
