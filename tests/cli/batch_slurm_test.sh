@@ -59,11 +59,14 @@ run_batch() {  # run_batch EXPECTED_EXIT ARGS...: the recipe through Slurm, wait
 
 # The first failed task in job order is 'broken' (exit 2). The hanging task:
 # its repair is stopped as soon as it runs.
+# Polled by time, not by count: on a loaded machine Slurm may take long to
+# start the task, and the repair itself lasts under a second.
 (
-  for _ in $(seq 1 1200); do
+  deadline=$((SECONDS + 600))
+  while [ "$SECONDS" -lt "$deadline" ]; do
     pid="$(pgrep -f "fabvdb repair .*$WORK/orders/slow.obj" | head -n 1)"
     [ -n "$pid" ] && { kill -STOP "$pid"; echo "$pid" > "$WORK/stopped"; break; }
-    sleep 0.05
+    sleep 0.01
   done
 ) &
 stopper=$!
