@@ -28,10 +28,12 @@ std::vector<PartMolding> parting_lines(const Shell& shell, const MoldabilityTerm
 Decomposition coarse_decomposition(const Shell& shell, const MoldabilityTerms& terms,
                                    const DecompositionOptions& options, nlohmann::json& log, Progress& progress) {
     const Elements elements = make_elements(shell, {}, std::vector<char>(shell.triangle_count(), 1));
-    // Regions are connected: a surface of several pieces needs two parts
-    // each (a closed piece as one part traps its core), whatever was asked.
+    // Regions are connected: a surface of several pieces needs a part per
+    // piece cast solid, else two (a closed shell as one part traps its core),
+    // whatever was asked.
     const int pieces = int(connected_pieces(elements).size());
-    const int first = std::max(options.parts > 0 ? options.parts : 2, pieces > 1 ? 2 * pieces : 1);
+    const int per_piece = shell.solid ? 1 : 2;
+    const int first = std::max(options.parts > 0 ? options.parts : per_piece, pieces > 1 ? per_piece * pieces : 1);
     const int last = std::max(options.parts > 0 ? options.parts : options.max_parts, first);
     Decomposition best;
     double best_energy = 1e300;

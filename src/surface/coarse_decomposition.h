@@ -1,6 +1,7 @@
 //! The automatic decomposition loop of the thesis (Alg. 1, §3.4.3–§3.4.4):
 //! starting from N_P = 2 parts (or the requested count; at least two per
-//! connected piece of the surface, as regions are connected), grow N_P regions,
+//! connected piece of the surface, as regions are connected; one when the
+//! shell is solid, as a solid part has no core to trap), grow N_P regions,
 //! compute each part's parting line for the region's direction, and add a
 //! part until the total moldability energy Σ E_P is below γ (or the part cap
 //! is reached, which keeps the lowest-energy attempt). Also the state a

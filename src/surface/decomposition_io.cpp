@@ -215,6 +215,7 @@ nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms
     doc["units"] = "mm; energies and the *_unit areas are in the unit-cube-scaled frame (lengths × unit_scale)";
     doc["unit_scale"] = shell.unit_scale;
     doc["shell_thickness"] = shell.thickness;
+    doc["solid"] = shell.solid;
     doc["draft_degrees"] = terms.draft * 180.0 / M_PI;
     doc["weights"] = {{"w_H", options.weights.overhang},
                       {"w_L", options.weights.overlap},

@@ -61,6 +61,7 @@ DecompositionSession::DecompositionSession(const Mesh& input, const nlohmann::js
     std::vector<Vec3> inner = field<std::vector<Vec3>>(low, "inner_vertices", name + ": low_res_surface");
     std::vector<int> thin = field<std::vector<int>>(low, "thin_segment", name + ": low_res_surface");
     shell_ = make_shell(std::move(outer), std::move(inner), std::move(thin), model.shell_thickness, name);
+    shell_.solid = document.value("solid", false);
     Step first;
     first.options.gamma = field<double>(document, "gamma", name);
     const double draft_degrees = field<double>(document, "draft_degrees", name);

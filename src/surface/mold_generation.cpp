@@ -88,9 +88,15 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
 
     std::vector<Mesh> solids;
     for (const DecomposedPart& part : model.parts) solids.push_back(part.solid);
+    // δ, how far the input may lie outside its low-res part: ω, and no less
+    // than the default ω (3% of the longest side), which a solid part's ω,
+    // as deep as the part is thick, may be far under.
+    const BoundingBox box = bounding_box(input);
+    const double longest = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
     volume::DetailRestorationOptions restoration;
     restoration.shell_thickness = model.shell_thickness;
-    restoration.reach = model.shell_thickness;
+    restoration.reach = std::max(model.shell_thickness, 0.03 * longest);
+    restoration.input_name = options.input_name;
     std::vector<openvdb::FloatGrid::Ptr> restored =
         volume::restore_part_details(*input_grid, solids, restoration, progress);
     clock.lap("detail restoration");

@@ -22,11 +22,18 @@ PartSurface part_surface(const Shell& shell, const std::vector<int>& part_of_tri
         s.normal.push_back(kind == PartSurface::outer ? shell.normal[source] : normalized(n));
         s.area.push_back(0.5 * norm(n) * area_scale);
     };
+    // A solid part without boundary is a whole piece of S_low: its prisms'
+    // inner faces meet on the medial surface, inside the part.
+    bool bounded = false;
+    for (size_t t = 0; t < shell.triangle_count() && !bounded; ++t)
+        if (part_of_triangle[t] == part)
+            for (int k = 0; k < 3; ++k) bounded = bounded || part_of_triangle[shell.neighbor[t][k]] != part;
+    const bool with_inner = !shell.solid || bounded;
     for (size_t t = 0; t < shell.triangle_count(); ++t) {
         if (part_of_triangle[t] != part) continue;
         const Triangle& f = shell.outer.triangles[t];
         add(PartSurface::outer, uint32_t(t), {f[0], f[1], f[2]});
-        add(PartSurface::inner, uint32_t(t), {v_count + f[0], v_count + f[2], v_count + f[1]});
+        if (with_inner) add(PartSurface::inner, uint32_t(t), {v_count + f[0], v_count + f[2], v_count + f[1]});
         for (int k = 0; k < 3; ++k) {
             if (part_of_triangle[shell.neighbor[t][k]] == part) continue;
             const uint32_t a = f[k], b = f[(k + 1) % 3];

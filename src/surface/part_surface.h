@@ -2,7 +2,9 @@
 //! its prisms (from S_low), their inner images (T_in, reversed to face out of
 //! the material) and the triangulated side quads along the part's boundary
 //! edges (T_side). Each surface triangle carries its kind, source, unit normal,
-//! unit-cube area and edge-adjacent surface triangles.
+//! unit-cube area and edge-adjacent surface triangles. A solid part that is a
+//! whole piece of S_low (no boundary edge) is its outer triangles alone: its
+//! inner faces would lie inside it, on the medial surface.
 #pragma once
 
 #include <array>

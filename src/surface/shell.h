@@ -19,6 +19,7 @@ struct Shell {
     std::vector<Vec3> inner;        //!< f_V: inner vertex of each outer vertex
     std::vector<int> thin_segment;  //!< per triangle: thin-feature segment id, or -1
     double thickness = 0;           //!< ω in millimetres
+    bool solid = false;             //!< prisms reach the medial surface: parts are cast solid, with no core
     double unit_scale = 1;          //!< 1 / largest bbox extent: lengths × unit_scale = unit-cube lengths
 
     // Derived by make_shell.

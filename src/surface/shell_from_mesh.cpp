@@ -15,6 +15,7 @@ Shell shell_from_mesh(const Mesh& input, const volume::LowResShellOptions& optio
     const size_t triangle_count = low.outer.triangles.size();
     Shell shell = make_shell(std::move(low.outer), std::move(low.inner), std::vector<int>(triangle_count, -1),
                              low.thickness, options.input_name);
+    shell.solid = options.solid;
     if (!options.solid) shell.thin_segment = thin_segments(shell.outer, shell.neighbor, low.depth, low.thickness);
     low.seconds["thin_features"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stats) {

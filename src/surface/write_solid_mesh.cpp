@@ -52,7 +52,7 @@ std::string solid_defects(const Mesh& mesh, Progress& progress) {
     add_count(text, found["degenerate_triangles"].get<uint64_t>(), "degenerate triangles");
     add_count(text, found["duplicate_triangles"].get<uint64_t>(), "duplicate triangles");
     add_count(text, found["self_intersecting_pairs"].get<uint64_t>(), "self-intersecting triangle pairs");
-    if (text.empty()) text = "its shells do not bound a volume (inward, or nested inconsistently)";
+    if (text.empty()) text = "its shells do not bound a volume (inward, nested inconsistently, or flat)";
     return text;
 }
 

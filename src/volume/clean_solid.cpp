@@ -2,7 +2,8 @@
 #include "volume/clean_solid.h"
 
 #include <atomic>
-#include <numeric>
+#include <cmath>
+#include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -13,6 +14,7 @@
 #include "volume/closed_manifold.h"
 #include "volume/crossing_pairs.h"
 #include "volume/memory_estimate.h"
+#include "volume/mesh_shells.h"
 
 namespace fabvdb::volume {
 
@@ -36,37 +38,24 @@ bool has_degenerate_triangle(const Mesh& mesh) {
     return degenerate;
 }
 
-bool is_one_shell(const Mesh& mesh) {
-    std::vector<uint32_t> parent(mesh.vertices.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto root = [&](uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    };
-    for (const Triangle& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = root(t[k]), b = root(t[(k + 1) % 3]);
-            if (a != b) parent[a] = b;
-        }
-    const uint32_t shell = root(mesh.triangles.front()[0]);
-    for (const Triangle& t : mesh.triangles)
-        if (root(t[0]) != shell) return false;
-    return true;
-}
-
 //! Whether a closed oriented manifold whose triangles do not cross bounds a
 //! volume. One such shell always bounds a region, outward exactly when its
 //! volume is positive; several must also nest consistently (CGAL), and CGAL
 //! also accepts a mesh turned wholly inside out (it bounds the unbounded
 //! complement), whose volume is negative.
 bool bounds_volume(const Mesh& mesh) {
-    const double volume = signed_volume(mesh);
-    if (volume <= 0.0) return false;
+    if (signed_volume(mesh) <= 0.0) return false;
     // A flat shell (a sliver tetrahedron) bounds no volume worth the name: its
-    // mean thickness, 2 V / A, is under 1e-4 of its size (0.01 mm on a 100 mm
-    // part), too thin to print, and a ray test cannot tell its inside.
-    if (2.0 * volume / surface_area(mesh) < 1e-4 * bounding_box(mesh).diagonal()) return false;
-    if (is_one_shell(mesh)) return true;
+    // mean thickness, 2 |V| / A, is under 1e-4 of the mesh's size (0.01 mm on
+    // a 100 mm part), too thin to print, and a ray test cannot tell its inside.
+    const double thinnest = 1e-4 * bounding_box(mesh).diagonal();
+    const std::vector<MeshShell> shells = split_shells(mesh);
+    for (const MeshShell& shell : shells) {
+        double area = 0.0;
+        for (uint32_t t : shell.triangles) area += triangle_area(mesh, mesh.triangles[t]);
+        if (2.0 * std::abs(shell.volume) < thinnest * area) return false;
+    }
+    if (shells.size() == 1) return true;
     // Only the vertices triangles use: CGAL's volume test fails on isolated ones.
     SurfaceMesh surface;
     std::vector<SurfaceMesh::Vertex_index> vertex(mesh.vertices.size(), SurfaceMesh::null_vertex());

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 #include <openvdb/tools/MeshToVolume.h>
 
@@ -40,7 +41,8 @@ std::vector<openvdb::FloatGrid::Ptr> restore_part_details(const openvdb::FloatGr
                                                                      band);
         progress.check();
         if (grid->activeVoxelCount() == 0)
-            throw Error(FABVDB_ERR_BAD_INPUT, "part " + std::to_string(i) + " encloses no volume");
+            throw Error(FABVDB_ERR_BAD_INPUT,
+                        options.input_name + ": part " + std::to_string(i) + " encloses no volume");
         low_res.push_back(grid);
         progress.update(double(i + 1) / double(2 * parts.size()));
     }
@@ -72,6 +74,16 @@ std::vector<openvdb::FloatGrid::Ptr> restore_part_details(const openvdb::FloatGr
                                                     &interrupter);
         progress.check();
         grid->setGridClass(openvdb::GRID_LEVEL_SET);
+        // A part about a voxel thin keeps almost no inside voxel: what would
+        // be restored of it is crumbs.
+        const double held =
+            grid->activeVoxelCount() == 0 ? 0.0 : openvdb::tools::levelSetVolume(*grid) / signed_volume(parts[i]);
+        if (!(held >= 0.5))
+            throw Error(FABVDB_ERR_BAD_INPUT,
+                        options.input_name + ": part " + std::to_string(i) + " is about a voxel (" +
+                            std::to_string(voxel) + " mm) thin over most of it: restored at this voxel it keeps " +
+                            std::to_string(int(std::lround(100.0 * std::max(held, 0.0)))) +
+                            "% of its volume; use a voxel at least three times finer, or fewer parts");
         restored.push_back(grid);
         progress.update(0.5 + double(i + 1) / double(2 * parts.size()));
     }

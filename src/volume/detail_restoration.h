@@ -10,6 +10,7 @@
 //! Returns level sets on the input's transform. Cancellable.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <openvdb/openvdb.h>
@@ -22,11 +23,13 @@ namespace fabvdb::volume {
 struct DetailRestorationOptions {
     double shell_thickness = 0.0;  //!< ω, mm (> 0)
     double reach = 0.0;            //!< δ, mm (> 0): how far the input may lie outside the low-res part
+    std::string input_name = "mesh";  //!< what the input is called in error messages
 };
 
 //! `input`: level set of the full-resolution input. `parts`: closed solids.
 //! Throws Error(INVALID_ARGUMENT) for options out of range, BAD_INPUT for a
-//! part that encloses no volume.
+//! part that encloses no volume or that keeps under half of its volume when
+//! restored at the input's voxel (a part about a voxel thin).
 std::vector<openvdb::FloatGrid::Ptr> restore_part_details(const openvdb::FloatGrid& input,
                                                           const std::vector<Mesh>& parts,
                                                           const DetailRestorationOptions& options,

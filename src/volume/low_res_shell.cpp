@@ -42,6 +42,14 @@ LowResShell low_res_shell(const Mesh& input, const LowResShellOptions& options, 
     ShellPrisms prisms = shell_prisms(*grid, result.outer.vertices, result.thickness, max_depth, progress);
     result.inner = std::move(prisms.inner);
     result.depth = std::move(prisms.depth);
+    if (options.solid) {
+        // ω bounds how deep below the surface a solid part reaches: the
+        // deepest point of the solid and two voxels more, so that restoring
+        // and sweeping a solid part need no band deeper than the part is.
+        float lowest = 0.0f;
+        for (auto value = grid->cbeginValueOn(); value; ++value) lowest = std::min(lowest, *value);
+        result.thickness = std::min(max_depth, -double(lowest) + 2.0 * result.voxel_size);
+    }
     clock.lap("shell_prisms");
     return result;
 }

@@ -3,7 +3,8 @@
 //! the S_low target, S_low from its zero level set (low_res_surface), and the
 //! prism inner vertices and medial depths (shell_prisms). Plain types only,
 //! so callers outside the volume module need no OpenVDB. `solid`: prisms
-//! reach the medial axis (depths up to half the longest side). Cancellable;
+//! reach the medial axis (depths up to half the longest side), and ω is the
+//! depth of the solid's deepest point, plus two voxels. Cancellable;
 //! refuses with Error(OUT_OF_BUDGET) before exceeding the memory budget.
 #pragma once
 
@@ -29,7 +30,7 @@ struct LowResShell {
     Mesh outer;                  //!< S_low
     std::vector<Vec3> inner;     //!< inner vertex per outer vertex
     std::vector<double> depth;   //!< medial depth per outer vertex (capped at 2ω, or the solid depth)
-    double thickness = 0;        //!< the ω used (the solid depth when solid)
+    double thickness = 0;        //!< the ω used; when solid, the solid's deepest point + 2 voxels
     double voxel_size = 0;
     int half_band_voxels = 0;
     std::map<std::string, double> seconds;  //!< per stage

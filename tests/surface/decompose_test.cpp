@@ -5,7 +5,7 @@
 // boundary length and turning), never with numbers the decomposition
 // reported about itself alone. Boundary smoothing is compared with the same
 // decomposition left unsmoothed. Two separate balls get parts of their own,
-// every triangle owned.
+// every triangle owned; a thin plate, cast solid, is one part.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,10 +30,11 @@ struct Written {
     std::vector<Vec3> corners;  // outer vertices, then inner vertices
 };
 
-Written run_and_read_mesh(const Mesh& input, const std::string& folder, int smoothing_iterations = 10) {
+Written run_and_read_mesh(const Mesh& input, const std::string& folder, int smoothing_iterations = 10,
+                          size_t low_res_triangles = 1500) {
     fabvdb::Progress progress;
     fabvdb::surface::DecomposeSettings settings;
-    settings.shell.target_triangles = 1500;
+    settings.shell.target_triangles = low_res_triangles;
     const fabvdb::BoundingBox box = fabvdb::bounding_box(input);
     settings.shell.thickness =
         0.03 * std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
@@ -109,6 +110,23 @@ TEST(Decompose, SeparateBallsGetPartsOfTheirOwn) {
         if (known < 0) known = side;
         EXPECT_EQ(known, side) << "part " << part_of[t] << " spans both balls";
     }
+}
+
+TEST(Decompose, ThinPlateIsOneSolidPart) {
+    // 60 x 60 x 2 mm: thinner than 2ω (3.6 mm) everywhere, so it is cast
+    // solid, and one two-piece mold along z casts it: one part, not two
+    // slabs of 1 mm. ω becomes the plate's half thickness plus two voxels
+    // (6000 low-res triangles: voxels of about 0.8 mm).
+    const std::string folder = std::filesystem::temp_directory_path() / "fabvdb_decompose_plate";
+    const Written w = run_and_read_mesh(fabvdb::test::make_box({-30, -30, -1}, {30, 30, 1}), folder, 10, 6000);
+    EXPECT_TRUE(w.doc["solid"].get<bool>());
+    ASSERT_EQ(w.doc["parts"].size(), 1u);
+    check_decomposition(w);
+    const Vec3 d = w.doc["parts"][0]["parting_direction"].get<Vec3>();
+    EXPECT_GT(std::abs(d[2]), 0.99);
+    EXPECT_LT(double(w.doc["shell_thickness"]), 3.5);
+    EXPECT_GT(double(w.doc["shell_thickness"]), 1.0);
+    std::filesystem::remove_all(folder);
 }
 
 TEST(Decompose, TorusSplitsInTwoMoldableParts) {

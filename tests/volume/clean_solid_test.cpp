@@ -161,6 +161,22 @@ TEST(CleanSolid, FlatTetrahedraFailThinPlatesPass) {
     EXPECT_TRUE(check_solid(test::make_box({0, 0, 0}, {60, 60, 0.1}), progress).clean);
 }
 
+TEST(CleanSolid, AFlatShellBesideASolidOneFails) {
+    Progress progress;
+    // A 20 mm cube (diagonal with the sliver about 48 mm, so flat is under
+    // 0.005 mm) and apart from it a sliver tetrahedron 1e-4 mm high: the
+    // mesh's volume and mean thickness are the cube's, yet one shell is flat.
+    Mesh mesh = test::make_box({0, 0, 0}, {20, 20, 20});
+    const uint32_t base = uint32_t(mesh.vertices.size());
+    for (const Vec3& p : std::vector<Vec3>{{30, 0, 0}, {40, 0, 0}, {30, 10, 0}, {33, 3, 1e-4}})
+        mesh.vertices.push_back(p);
+    const std::vector<Triangle> sliver = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+    for (const Triangle& t : sliver) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    EXPECT_FALSE(check_solid(mesh, progress).clean);
+    mesh.vertices.back()[2] = 1.0;
+    EXPECT_TRUE(check_solid(mesh, progress).clean);
+}
+
 TEST(CleanSolid, CancelledThrows) {
     std::atomic<bool> cancel{true};
     Progress progress(nullptr, nullptr, &cancel);

@@ -73,6 +73,42 @@ TEST(DetailRestoration, CoarseHemispheresGetTheFineSphereBack) {
     EXPECT_LT(common, 0.005 * shell_volume);
 }
 
+TEST(DetailRestoration, RefusesAPartAboutAVoxelThin) {
+    openvdb::initialize();
+    // A 40 x 40 x 0.6 mm plate at a 0.4 mm voxel, as two parts 0.3 mm thick
+    // (under a voxel) one above the other: restored, each would keep almost
+    // nothing. As one part 0.6 mm thick it is restored.
+    const double voxel = 0.4;
+    const Mesh plate = fabvdb::test::make_box({-20, -20, -0.3}, {20, 20, 0.3});
+    std::vector<openvdb::Vec3s> points;
+    std::vector<openvdb::Vec3I> triangles;
+    for (const Vec3& p : plate.vertices) points.emplace_back(float(p[0] / voxel), float(p[1] / voxel), float(p[2] / voxel));
+    for (const auto& t : plate.triangles) triangles.emplace_back(t[0], t[1], t[2]);
+    auto transform = openvdb::math::Transform::createLinearTransform(voxel);
+    openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
+    auto input = openvdb::tools::meshToVolume<openvdb::FloatGrid>(adapter, *transform, 6.0f, 6.0f);
+    input->setGridClass(openvdb::GRID_LEVEL_SET);
+
+    fabvdb::Progress progress;
+    fabvdb::volume::DetailRestorationOptions options;
+    options.shell_thickness = 1.0;
+    options.reach = 1.0;
+    options.input_name = "plate.stl";
+    const Mesh lower = fabvdb::test::make_box({-20, -20, -0.3}, {20, 20, 0.0});
+    const Mesh upper = fabvdb::test::make_box({-20, -20, 0.0}, {20, 20, 0.3});
+    try {
+        fabvdb::volume::restore_part_details(*input, {lower, upper}, options, progress);
+        ADD_FAILURE() << "two sub-voxel parts were restored";
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_BAD_INPUT);
+        EXPECT_NE(std::string(e.what()).find("plate.stl: part 0"), std::string::npos) << e.what();
+    }
+    const auto whole = fabvdb::volume::restore_part_details(*input, {plate}, options, progress);
+    ASSERT_EQ(whole.size(), 1u);
+    const Mesh restored = fabvdb::volume::extract_mesh(*whole[0], 0.0, progress);
+    EXPECT_NEAR(fabvdb::test::mesh_volume(restored), 40 * 40 * 0.6, 0.1 * 40 * 40 * 0.6);
+}
+
 TEST(DetailRestoration, RefusesBadOptions) {
     openvdb::FloatGrid input;
     input.setGridClass(openvdb::GRID_LEVEL_SET);
