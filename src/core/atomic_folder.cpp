@@ -48,7 +48,10 @@ void AtomicFolder::commit() {
     }
     fs::rename(temp_path_, path_, error);
     if (error) {
-        if (replacing) fs::rename(fs::path(old) / "folder", path_, error);
+        if (replacing) {
+            fs::rename(fs::path(old) / "folder", path_, error);
+            if (!error) fs::remove(old, error);
+        }
         throw Error(FABVDB_ERR_IO, path_ + ": cannot move the finished folder into place");
     }
     committed_ = true;

@@ -73,6 +73,13 @@ double signed_volume(const Mesh& mesh) {
     return six_volume / 6.0;
 }
 
+void append(Mesh& to, const Mesh& from) {
+    const uint32_t base = uint32_t(to.vertices.size());
+    to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+    to.triangles.reserve(to.triangles.size() + from.triangles.size());
+    for (const Triangle& t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
 void validate_mesh(const Mesh& mesh, const std::string& what) {
     for (size_t i = 0; i < mesh.vertices.size(); ++i)
         for (double c : mesh.vertices[i])

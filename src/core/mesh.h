@@ -47,6 +47,10 @@ double six_signed_tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c
 //! meaningless for open ones.
 double signed_volume(const Mesh& mesh);
 
+//! Adds `from`'s vertices and triangles to `to`, its indices shifted past
+//! `to`'s vertices.
+void append(Mesh& to, const Mesh& from);
+
 //! Throws Error(FABVDB_ERR_BAD_INPUT) naming `what` (usually the file) and the
 //! defect when a coordinate is not finite or an index is out of range.
 void validate_mesh(const Mesh& mesh, const std::string& what);

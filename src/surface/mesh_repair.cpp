@@ -39,12 +39,6 @@ bool is_clean_either_way(const Mesh& mesh, Progress& progress) {
     return volume::check_solid(flipped, progress).clean;
 }
 
-void append(Mesh& to, const Mesh& from) {
-    const uint32_t base = uint32_t(to.vertices.size());
-    to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
-    for (const Triangle& t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-}
-
 }  // namespace
 
 std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& progress) {

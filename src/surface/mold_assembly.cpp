@@ -242,9 +242,7 @@ MoldPair assemble_common_mold(const std::vector<Mesh>& parts, const std::vector<
         for (Vec3& v : local.vertices) v = {v[0] + offset[0], v[1] + offset[1], v[2] + offset[2]};
         offsets.push_back(offset);
         parting_lines.push_back(silhouette(local));
-        const uint32_t base = uint32_t(row.vertices.size());
-        row.vertices.insert(row.vertices.end(), local.vertices.begin(), local.vertices.end());
-        for (const Triangle& t : local.triangles) row.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        append(row, local);
     }
     MoldPair pair = assemble_in_frame(row, parting_lines, options, progress);
     round_pieces_to_float(pair);

@@ -22,12 +22,8 @@ namespace {
 Mesh merged(const std::vector<CastPart>& parts, std::vector<size_t>& part_of_triangle) {
     Mesh all;
     for (size_t p = 0; p < parts.size(); ++p) {
-        const uint32_t base = uint32_t(all.vertices.size());
-        all.vertices.insert(all.vertices.end(), parts[p].part.vertices.begin(), parts[p].part.vertices.end());
-        for (const Triangle& t : parts[p].part.triangles) {
-            all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-            part_of_triangle.push_back(p);
-        }
+        append(all, parts[p].part);
+        part_of_triangle.insert(part_of_triangle.end(), parts[p].part.triangles.size(), p);
     }
     return all;
 }

@@ -4,8 +4,8 @@
 //! (exact collinearity), no two triangles crossing (crossing_pairs.h, exact
 //! predicates), and the shells oriented so that they bound a volume (outer
 //! shells outward, voids inward: a positive volume, and for several shells
-//! CGAL's nesting test), no shell flat (each shell's mean thickness 2|V|/A
-//! at least 1e-4 of the diagonal). When crossing triangles are the only defect found,
+//! CGAL's nesting test), not flat (a mean thickness 2V/A of at least 1e-4 of
+//! the diagonal, and no shell under that and under 1% of its own size). When crossing triangles are the only defect found,
 //! their pairs come back too (resolve_crossings.h can remove them).
 //! Pure; reports progress and throws Error(CANCELLED).
 #pragma once

@@ -24,12 +24,13 @@ ShellCounts drop_small_shells(openvdb::FloatGrid::Ptr& grid, double min_volume, 
         counts.kept = std::max<uint64_t>(1, pieces.size());
         return counts;
     }
+    if (grid->activeVoxelCount() == 0) return counts;  // no shell at all
     std::vector<openvdb::FloatGrid::Ptr> shells;
     openvdb::tools::segmentSDF(*grid, shells);
     progress.check();
     std::vector<openvdb::FloatGrid::Ptr> kept;
     for (size_t i = 0; i < shells.size(); ++i) {
-        if (openvdb::tools::levelSetVolume(*shells[i]) >= min_volume)
+        if (shells[i]->activeVoxelCount() > 0 && openvdb::tools::levelSetVolume(*shells[i]) >= min_volume)
             kept.push_back(shells[i]);
         else
             ++counts.dropped;

@@ -2,17 +2,19 @@
 #include "volume/extract_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include "core/error.h"
+#include "volume/mesh_shells.h"
 #include "volume/part_coincident_vertices.h"
 
 namespace fabvdb::volume {
 
 double surface_isovalue(const openvdb::FloatGrid& grid) { return 1e-4 * grid.voxelSize()[0]; }
 
-Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& progress) {
+Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& progress, uint64_t* shells_dropped) {
     if (!(adaptivity >= 0.0 && adaptivity <= 1.0))
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "adaptivity must be in [0, 1]");
     progress.stage("extract surface");
@@ -40,6 +42,10 @@ Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& p
         }
     }
     part_coincident_vertices(mesh);
+    // Shells under an eighth of a voxel in volume are sign noise of a few
+    // voxels, no feature the grid can hold: crumbs and flat slivers.
+    const MeshShellCounts noise = drop_small_mesh_shells(mesh, std::pow(0.5 * grid.voxelSize()[0], 3));
+    if (shells_dropped) *shells_dropped = noise.dropped;
     progress.update(1.0);
     return mesh;
 }

@@ -127,12 +127,6 @@ Mesh flipped(Mesh mesh) {
     return mesh;
 }
 
-void append(Mesh& to, const Mesh& from) {
-    const uint32_t base = uint32_t(to.vertices.size());
-    to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
-    for (const Triangle& t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-}
-
 }  // namespace
 
 double automatic_hollow_voxel(double wall) { return wall / 4.0; }

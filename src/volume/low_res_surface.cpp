@@ -62,11 +62,11 @@ Mesh low_res_surface(const openvdb::FloatGrid& grid, size_t target_triangles, Pr
     // Crumbs: sub-voxel bubbles of the level set, a few triangles each, that
     // no part could be made of. Voids: a cast part cannot hold a closed void,
     // so the decomposition fills them (their walls take no part).
-    drop_small_mesh_shells(result, std::pow(0.5 * edge, 3));
-    std::vector<uint32_t> solid_shells;
+    const double crumb = std::pow(0.5 * edge, 3);
+    std::vector<uint32_t> kept;
     for (const MeshShell& shell : split_shells(result))
-        if (shell.volume > 0) solid_shells.insert(solid_shells.end(), shell.triangles.begin(), shell.triangles.end());
-    if (solid_shells.size() < result.triangles.size()) result = sub_mesh(result, solid_shells);
+        if (shell.volume >= crumb) kept.insert(kept.end(), shell.triangles.begin(), shell.triangles.end());
+    if (kept.size() < result.triangles.size()) result = sub_mesh(result, kept);
     if (result.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the level set has no surface");
     progress.update(1.0);
     return result;

@@ -31,8 +31,10 @@ auto timed(std::map<std::string, double>& timings, const char* stage, const Body
 // may touch: such a solid is grown by half a voxel (at most twice) until its
 // surface is a closed manifold without crossings. With snapping, the
 // crossing test of the snapped surface covers the extracted one as well.
-void extract_clean_surface(const OrientedInput& input, const RepairOptions& options, RepairResult& result,
-                           Progress& progress) {
+// Returns the shells the last extraction dropped as noise.
+uint64_t extract_clean_surface(const OrientedInput& input, const RepairOptions& options, RepairResult& result,
+                               Progress& progress) {
+    uint64_t specks = 0;
     auto& timings = result.distance.timings;
     for (int attempt = 0;; ++attempt) {
         const bool last = attempt == 2;
@@ -42,7 +44,7 @@ void extract_clean_surface(const OrientedInput& input, const RepairOptions& opti
                 result.grid = rebuild_band(*result.grid, 0.5 * result.grid->voxelSize()[0],
                                            options.distance.half_band_voxels, progress);
             }
-            result.mesh = extract_mesh(*result.grid, options.adaptivity, progress);
+            result.mesh = extract_mesh(*result.grid, options.adaptivity, progress, &specks);
             return is_closed_manifold(result.mesh);
         });
         if (!manifold && !last) continue;
@@ -57,7 +59,7 @@ void extract_clean_surface(const OrientedInput& input, const RepairOptions& opti
         } else {
             crossing = timed(timings, "extract surface", [&] { return !crossing_pairs(result.mesh).empty(); });
         }
-        if (!crossing || last) return;
+        if (!crossing || last) return specks;
     }
 }
 
@@ -99,14 +101,14 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     }
     result.distance.active_voxels = result.grid->activeVoxelCount();
     if (!options.extract) return result;
-    extract_clean_surface(input, options, result, progress);
+    const uint64_t specks = extract_clean_surface(input, options, result, progress);
     // Surface shells under a voxel's volume are specks of the extraction
     // (a voxel barely below zero), not pieces of the solid: always dropped.
     const double voxel = result.grid->voxelSize()[0];
     const MeshShellCounts surface_shells = timed(timings, "shells", [&] {
         return drop_small_mesh_shells(result.mesh, voxel * voxel * voxel);
     });
-    result.shells_dropped += surface_shells.dropped;
+    result.shells_dropped += specks + surface_shells.dropped;
     if (count_on_surface) result.shells_kept = surface_shells.kept;
     return result;
 }

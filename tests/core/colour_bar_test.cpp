@@ -12,19 +12,12 @@
 
 #include "core/colour_bar.h"
 #include "core/error.h"
+#include "support/temp_files.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct TempFolder {
-    fs::path path;
-    TempFolder() {
-        std::string pattern = (fs::temp_directory_path() / "fabvdb_colour_bar_XXXXXX").string();
-        path = mkdtemp(pattern.data());
-    }
-    ~TempFolder() { fs::remove_all(path); }
-};
+using fabvdb::test::TempDir;
 
 struct Pixel {
     int r, g, b;
@@ -35,13 +28,13 @@ bool near(const Pixel& p, int r, int g, int b, int tolerance) {
 }
 
 TEST(ColourBar, LowEndBelowHighEndWithTitleAbove) {
-    TempFolder folder;
-    const std::string path = (folder.path / "legend.png").string();
+    TempDir folder;
+    const std::string path = (fs::path(folder.path()) / "legend.png").string();
     fabvdb::write_colour_bar_png(path, "Wall thickness", 0.5, 4.0, "mm");
     ASSERT_TRUE(fs::exists(path));
     // Only the PNG is left in the folder: no temporary file.
     int entries = 0;
-    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder.path)) ++entries;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(fs::path(folder.path()))) ++entries;
     EXPECT_EQ(entries, 1);
 
     cairo_surface_t* image = cairo_image_surface_create_from_png(path.c_str());
@@ -74,8 +67,8 @@ TEST(ColourBar, LowEndBelowHighEndWithTitleAbove) {
 }
 
 TEST(ColourBar, MissingFolderIsAnIoError) {
-    TempFolder folder;
-    const fs::path path = folder.path / "missing" / "legend.png";
+    TempDir folder;
+    const fs::path path = fs::path(folder.path()) / "missing" / "legend.png";
     try {
         fabvdb::write_colour_bar_png(path.string(), "Draft", 0.0, 90.0, "deg");
         FAIL() << "no error";
@@ -83,7 +76,7 @@ TEST(ColourBar, MissingFolderIsAnIoError) {
         EXPECT_EQ(error.status(), FABVDB_ERR_IO);
     }
     EXPECT_FALSE(fs::exists(path));
-    EXPECT_TRUE(fs::is_empty(folder.path));
+    EXPECT_TRUE(fs::is_empty(fs::path(folder.path())));
 }
 
 }  // namespace

@@ -1,43 +1,17 @@
-//! Helpers of the mesh I/O tests: a temporary folder that removes itself,
-//! writing raw bytes to a file, reading a mesh, and checking a read fails with
-//! the right status and a message that names the file and the defect.
+//! Helpers of the mesh I/O tests: reading a mesh, and checking a read fails
+//! with the right status and a message that names the file and the defect;
+//! with the temporary folders and raw files of support/temp_files.h.
 #pragma once
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "core/error.h"
 #include "io/mesh_io.h"
+#include "support/temp_files.h"
 
 namespace fabvdb::test {
-
-class TempDir {
-public:
-    TempDir() {
-        std::string pattern = (std::filesystem::temp_directory_path() / "fabvdb-io-XXXXXX").string();
-        if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-        path_ = pattern;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    std::string file(const std::string& name) const { return path_ + "/" + name; }
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
-};
-
-inline std::string write_bytes(const std::string& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
-    return path;
-}
 
 inline Mesh read(const std::string& path) {
     Progress progress;

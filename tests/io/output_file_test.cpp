@@ -7,11 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -26,19 +23,10 @@ namespace {
 namespace fs = std::filesystem;
 using fabvdb::io::write_double;
 using fabvdb::io::write_file_atomically;
+using fabvdb::test::entry_count;
+using fabvdb::test::read_bytes;
 using fabvdb::test::TempDir;
 using fabvdb::test::write_bytes;
-
-std::string contents(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-int entries(const std::string& folder) {
-    int count = 0;
-    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder)) ++count;
-    return count;
-}
 
 TEST(WriteFileAtomically, WritesTheExactBytes) {
     TempDir dir;
@@ -47,8 +35,8 @@ TEST(WriteFileAtomically, WritesTheExactBytes) {
     expected.push_back('\0');
     expected += std::string(3 << 20, 'z');  // more than the 1 MiB buffer
     write_file_atomically(path, [&](std::ostream& out) { out.write(expected.data(), std::streamsize(expected.size())); });
-    EXPECT_EQ(contents(path), expected);
-    EXPECT_EQ(entries(dir.path()), 1);
+    EXPECT_EQ(read_bytes(path), expected);
+    EXPECT_EQ(entry_count(dir.path()), 1);
 }
 
 TEST(WriteFileAtomically, NothingWrittenMakesAnEmptyFile) {
@@ -63,8 +51,8 @@ TEST(WriteFileAtomically, ReplacesAnOldFile) {
     TempDir dir;
     const std::string path = write_bytes(dir.file("part.obj"), "an old file, longer than the new one");
     write_file_atomically(path, [](std::ostream& out) { out << "new"; });
-    EXPECT_EQ(contents(path), "new");
-    EXPECT_EQ(entries(dir.path()), 1);
+    EXPECT_EQ(read_bytes(path), "new");
+    EXPECT_EQ(entry_count(dir.path()), 1);
 }
 
 TEST(WriteFileAtomically, AThrowingWriterLeavesTheOldFileAndNoTemporary) {
@@ -76,14 +64,14 @@ TEST(WriteFileAtomically, AThrowingWriterLeavesTheOldFileAndNoTemporary) {
                                            throw std::runtime_error("cancelled");
                                        }),
                  std::runtime_error);
-    EXPECT_EQ(contents(path), "old");
-    EXPECT_EQ(entries(dir.path()), 1);
+    EXPECT_EQ(read_bytes(path), "old");
+    EXPECT_EQ(entry_count(dir.path()), 1);
     // Without an old file, nothing appears.
     const std::string fresh = dir.file("fresh.ply");
     EXPECT_THROW(write_file_atomically(fresh, [](std::ostream&) { throw std::runtime_error("x"); }),
                  std::runtime_error);
     EXPECT_FALSE(fs::exists(fresh));
-    EXPECT_EQ(entries(dir.path()), 1);
+    EXPECT_EQ(entry_count(dir.path()), 1);
 }
 
 TEST(WriteFileAtomically, AFailedStreamIsAnIoErrorNamingThePath) {
@@ -99,8 +87,8 @@ TEST(WriteFileAtomically, AFailedStreamIsAnIoErrorNamingThePath) {
         EXPECT_EQ(error.status(), FABVDB_ERR_IO);
         EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
     }
-    EXPECT_EQ(contents(path), "old");
-    EXPECT_EQ(entries(dir.path()), 1);
+    EXPECT_EQ(read_bytes(path), "old");
+    EXPECT_EQ(entry_count(dir.path()), 1);
 }
 
 TEST(WriteFileAtomically, MissingFolderIsAnIoError) {
@@ -115,7 +103,7 @@ TEST(WriteFileAtomically, MissingFolderIsAnIoError) {
         EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
     }
     EXPECT_FALSE(called);
-    EXPECT_EQ(entries(dir.path()), 0);
+    EXPECT_EQ(entry_count(dir.path()), 0);
 }
 
 std::string text_of(double value) {

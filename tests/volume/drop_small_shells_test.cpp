@@ -1,7 +1,7 @@
 // Dropping small solid pieces of a level set: of two balls the small one goes
 // (its centre turns outside, the big one's stays inside), 0 only counts, the
-// grid is replaced only when something goes, it may end up empty, and a
-// cancelled call leaves the grid as it was.
+// grid is replaced only when something goes, it may end up empty, an empty
+// grid has no shell, and a cancelled call leaves the grid as it was.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -95,6 +95,15 @@ TEST(DropSmallShells, EverythingCanGo) {
     EXPECT_GT(value_at(*grid, {0, 0, 0}), 0.0f);
     EXPECT_GT(value_at(*grid, {12, 0, 0}), 0.0f);
     EXPECT_EQ(grid->getGridClass(), openvdb::GRID_LEVEL_SET);
+}
+
+TEST(DropSmallShells, AnEmptyGridHasNoShells) {
+    openvdb::FloatGrid::Ptr grid = openvdb::createLevelSet<openvdb::FloatGrid>(0.5);
+    fabvdb::Progress progress;
+    const auto counts = drop_small_shells(grid, 1.0, progress);
+    EXPECT_EQ(counts.kept, 0u);
+    EXPECT_EQ(counts.dropped, 0u);
+    EXPECT_EQ(grid->activeVoxelCount(), 0u);
 }
 
 TEST(DropSmallShells, CancelledCallLeavesTheGrid) {

@@ -1,5 +1,6 @@
 // Extraction of a level set's surface: an analytic sphere level set gives a
-// closed, outward-oriented mesh of the sphere's volume with shared vertices.
+// closed, outward-oriented mesh of the sphere's volume with shared vertices;
+// a one-voxel speck beside it is dropped and counted.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,6 +48,29 @@ TEST(ExtractMesh, SphereIsClosedOutwardWithItsVolume) {
             EXPECT_NEAR(r, radius, 0.5 * voxel);
         }
     }
+}
+
+TEST(ExtractMesh, ASpeckOfOneVoxelIsDroppedAndCounted) {
+    openvdb::initialize();
+    // A sphere, and far from it one voxel barely inside (−0.01 voxel) among
+    // outside neighbours: its surface is a speck about a hundredth of a
+    // voxel across, noise no solid could be.
+    const double voxel = 0.5;
+    auto grid = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(5.0f, openvdb::Vec3f(0, 0, 0),
+                                                                         float(voxel));
+    auto access = grid->getAccessor();
+    const openvdb::Coord speck(40, 0, 0);
+    for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dz = -1; dz <= 1; ++dz) access.setValueOn(speck.offsetBy(dx, dy, dz), float(voxel));
+    access.setValueOn(speck, float(-0.01 * voxel));
+    fabvdb::Progress progress;
+    uint64_t dropped = 0;
+    const fabvdb::Mesh mesh = fabvdb::volume::extract_mesh(*grid, 0.0, progress, &dropped);
+    EXPECT_EQ(dropped, 1u);
+    EXPECT_TRUE(every_edge_paired(mesh));
+    for (const auto& v : mesh.vertices) EXPECT_LT(v[0], 10.0);
+    EXPECT_NEAR(fabvdb::test::mesh_volume(mesh), 4.0 / 3.0 * M_PI * 125.0, 0.02 * 4.0 / 3.0 * M_PI * 125.0);
 }
 
 TEST(ExtractMesh, EmptyGridGivesEmptyMesh) {
