@@ -355,6 +355,56 @@ std::vector<double> shell_volumes(const Mesh& mesh, const std::vector<uint32_t>&
     return volume;
 }
 
+//! Generalized winding number of `mesh` at `p` (sum of the triangles' signed
+//! solid angles over 4π): about 1 inside a closed outward surface, 0 outside,
+//! and a vote of the triangles for a soup.
+double winding_number(const Mesh& mesh, const Vec3& p) {
+    double total = 0;
+    for (const auto& t : mesh.triangles) {
+        Vec3 a, b, c;
+        for (int k = 0; k < 3; ++k) {
+            a[k] = mesh.vertices[t[0]][k] - p[k];
+            b[k] = mesh.vertices[t[1]][k] - p[k];
+            c[k] = mesh.vertices[t[2]][k] - p[k];
+        }
+        const double la = norm(a), lb = norm(b), lc = norm(c);
+        const Vec3 bc = cross(b, c);
+        const double numerator = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
+        const double denominator = la * lb * lc + (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * lc +
+                                   (b[0] * c[0] + b[1] * c[1] + b[2] * c[2]) * la +
+                                   (c[0] * a[0] + c[1] * a[1] + c[2] * a[2]) * lb;
+        total += 2.0 * std::atan2(numerator, denominator);
+    }
+    return total / (4.0 * M_PI);
+}
+
+//! Points just inside a void shell's void: in front of its 7 largest
+//! triangles (a void shell faces into its void), a tenth of the triangle's
+//! size and at most 1e-3 of `diagonal` away.
+std::vector<Vec3> points_in_void(const Mesh& mesh, const std::vector<uint32_t>& labels, uint32_t shell,
+                                 double diagonal) {
+    std::vector<std::pair<double, uint32_t>> by_area;
+    for (uint32_t i = 0; i < mesh.triangles.size(); ++i)
+        if (labels[i] == shell) by_area.push_back({area_of(mesh, mesh.triangles[i]), i});
+    const size_t n = std::min<size_t>(7, by_area.size());
+    std::partial_sort(by_area.begin(), by_area.begin() + long(n), by_area.end(),
+                      [](auto& a, auto& b) { return a.first > b.first; });
+    std::vector<Vec3> points;
+    for (size_t j = 0; j < n; ++j) {
+        const auto& t = mesh.triangles[by_area[j].second];
+        const Vec3 normal = cross(sub(mesh.vertices[t[1]], mesh.vertices[t[0]]), sub(mesh.vertices[t[2]], mesh.vertices[t[0]]));
+        const double length = norm(normal);
+        if (!(length > 0)) continue;
+        const double step = std::min(1e-3 * diagonal, 0.1 * std::sqrt(by_area[j].first));
+        Vec3 p;
+        for (int k = 0; k < 3; ++k)
+            p[k] = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3 +
+                   step * normal[k] / length;
+        points.push_back(p);
+    }
+    return points;
+}
+
 std::string option(int argc, char** argv, const std::string& name, const std::string& fallback = "") {
     for (int i = 0; i + 1 < argc; ++i)
         if (name == argv[i]) return argv[i + 1];
@@ -392,9 +442,12 @@ json check_solid(int argc, char** argv) {
         const auto volume = shell_volumes(mesh, labels, sign.size());
         // A void shell lying on the input's surface (the median distance of
         // its vertices to it under 1% of the diagonal: kept as it was, or as
-        // a repair rebuilt it, while a cavity made lies a wall deep) is the
-        // input's own void: the cavities made are the others, and their wall
-        // is measured to the outer shells and the input's voids alike.
+        // a repair rebuilt it, while a cavity made lies a wall deep) whose
+        // inside is outside the input (winding number under 1/2 at most
+        // points just inside it: a soup's inner triangles may lie near a
+        // cavity made, but do not enclose it) is the input's own void: the
+        // cavities made are the others, and their wall is measured to the
+        // outer shells and the input's voids alike.
         std::vector<char> made(volume.size(), 0);
         for (size_t s = 0; s < volume.size(); ++s) made[s] = volume[s] < 0;
         size_t own_voids = 0;
@@ -417,7 +470,11 @@ json check_solid(int argc, char** argv) {
             for (size_t s = 0; s < volume.size(); ++s) {
                 if (!made[s] || depth[s].empty()) continue;
                 std::nth_element(depth[s].begin(), depth[s].begin() + long(depth[s].size() / 2), depth[s].end());
-                if (depth[s][depth[s].size() / 2] < 0.01 * box.diagonal()) {
+                if (depth[s][depth[s].size() / 2] >= 0.01 * box.diagonal()) continue;
+                int outside = 0, inside = 0;
+                for (const Vec3& p : points_in_void(mesh, labels, uint32_t(s), box.diagonal()))
+                    (winding_number(input, p) < 0.5 ? outside : inside) += 1;
+                if (outside > inside) {
                     made[s] = 0;
                     ++own_voids;
                 }

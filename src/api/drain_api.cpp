@@ -249,7 +249,7 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         part_options.plan.search.target_residual_fraction = o.target_residual;
         if (o.keep_out_path)
             part_options.plan.keep_out = fabvdb::powder::read_keep_out(
-                o.keep_out_path, o.voxel_size > 0 ? o.voxel_size : o.wall / 4.0, progress);
+                o.keep_out_path, o.voxel_size > 0 ? o.voxel_size : o.wall / 4.0, 0.5 * o.hole_diameter, progress);
         fabvdb::powder::DrainPartResult result = fabvdb::powder::drain_part(mesh->mesh, part_options, progress);
         const auto timings_with_total = [&result] {
             nlohmann::json timings = result.timings;

@@ -50,12 +50,13 @@ bool KeepOut::touches(const Vec3& point, double margin) const {
     }
     if (region) {
         const openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sampler(*region);
-        if (sampler.wsSample(openvdb::Vec3d(point[0], point[1], point[2])) < margin) return true;
+        const double distance = sampler.wsSample(openvdb::Vec3d(point[0], point[1], point[2]));
+        if (distance < margin && distance < double(region->background())) return true;
     }
     return false;
 }
 
-KeepOut read_keep_out(const std::string& path, double voxel_size, Progress& progress) {
+KeepOut read_keep_out(const std::string& path, double voxel_size, double reach, Progress& progress) {
     KeepOut keep_out;
     if (has_json_extension(path)) {
         std::ifstream file(path);
@@ -79,6 +80,7 @@ KeepOut read_keep_out(const std::string& path, double voxel_size, Progress& prog
     const Mesh mesh = io::read_mesh(path, progress);
     volume::SignedDistanceOptions options;
     options.voxel_size = voxel_size;
+    options.half_band_voxels = std::max(3, int(std::ceil(reach / voxel_size)) + 2);
     options.input_name = path;
     keep_out.region = volume::signed_distance_from_mesh(mesh, options, progress);
     return keep_out;

@@ -10,6 +10,7 @@
 namespace fabvdb::powder {
 
 SurfaceRayCaster::SurfaceRayCaster(const Mesh& mesh) {
+    if (mesh.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the cavity surface has no triangles");
     RTCDevice device = rtcNewDevice(nullptr);
     if (!device) throw Error(FABVDB_ERR_INTERNAL, "Embree could not create a device");
     device_ = device;

@@ -12,7 +12,9 @@ namespace fabvdb::powder {
 
 class SurfaceRayCaster {
 public:
-    //! Keeps no reference to `mesh`. Throws Error(INTERNAL) if Embree fails.
+    //! Keeps no reference to `mesh`. Throws Error(BAD_INPUT) for a mesh
+    //! without triangles, Error(INTERNAL) if Embree cannot start and
+    //! Error(OUT_OF_MEMORY) if it cannot hold the mesh.
     explicit SurfaceRayCaster(const Mesh& mesh);
     ~SurfaceRayCaster();
     SurfaceRayCaster(const SurfaceRayCaster&) = delete;

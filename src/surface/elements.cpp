@@ -25,18 +25,21 @@ Elements make_elements(const Shell& shell, const std::vector<std::vector<uint32_
         if (!domain[a] || !domain[b]) return;
         parent[find_root(parent, int(a))] = find_root(parent, int(b));
     };
+    // Each set is joined through its first member in the domain.
     std::vector<int> first_of_segment;
     for (size_t t = 0; t < n; ++t) {
         const int s = shell.thin_segment[t];
-        if (s < 0) continue;
+        if (s < 0 || !domain[t]) continue;
         if (size_t(s) >= first_of_segment.size()) first_of_segment.resize(size_t(s) + 1, -1);
         if (first_of_segment[s] < 0)
             first_of_segment[s] = int(t);
         else
             unite(uint32_t(first_of_segment[s]), uint32_t(t));
     }
-    for (const auto& set : no_cut_sets)
-        for (size_t i = 1; i < set.size(); ++i) unite(set[0], set[i]);
+    for (const auto& set : no_cut_sets) {
+        const auto first = std::find_if(set.begin(), set.end(), [&](uint32_t t) { return domain[t] != 0; });
+        for (auto t = first; t != set.end(); ++t) unite(*first, *t);
+    }
 
     Elements elements;
     elements.element_of_triangle.assign(n, -1);

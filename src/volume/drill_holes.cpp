@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <openvdb/tools/Prune.h>
 
@@ -39,7 +40,11 @@ openvdb::FloatGrid::Ptr drill_holes(const openvdb::FloatGrid& solid, const std::
         const openvdb::Vec3d b(cylinder.end[0], cylinder.end[1], cylinder.end[2]);
         const double length = (b - a).length();
         if (!(length > 0.0) || !(cylinder.radius > 0.0))
-            throw Error(FABVDB_ERR_INVALID_ARGUMENT, "a drill needs a length and a positive radius");
+            throw Error(FABVDB_ERR_INVALID_ARGUMENT, "drill " + std::to_string(c + 1) + " of " +
+                                                         std::to_string(cylinders.size()) + " has length " +
+                                                         std::to_string(length) + " mm and radius " +
+                                                         std::to_string(cylinder.radius) +
+                                                         " mm: a drill needs a length and a positive radius");
         const openvdb::Vec3d axis = (b - a) / length;
         const double reach = cylinder.radius + double(background) + voxel;
         openvdb::Vec3d lo = openvdb::math::minComponent(a, b) - openvdb::Vec3d(reach);

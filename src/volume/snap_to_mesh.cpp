@@ -21,7 +21,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Vector = Kernel::Vector_3;
 
-// The input facing the surface's way: |cos| of the angle between normals.
+// The input along the surface: |cos| of the angle between normals.
 constexpr double min_facing = 0.5;
 // A moved triangle keeps its orientation (cos of the turn) and some area.
 constexpr double min_turn = 0.2;

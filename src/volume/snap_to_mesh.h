@@ -1,9 +1,10 @@
 //! Snapping of an extracted surface back onto the input it came from, so
 //! clean regions keep sub-voxel fidelity and sharp edges survive better. A
 //! vertex moves to its closest point on the input when that point is within
-//! `max_distance`, the input triangle there faces the same way as the surface
-//! around the vertex (so holes, interior and inverted triangles attract
-//! nothing), and no triangle around it flips or degenerates. Vertices nearest
+//! `max_distance`, the input triangle there lies along the surface around
+//! the vertex (normals within 60°, either way: an input triangle across the
+//! surface, as at a hole's rim or inside, attracts nothing; an inverted one
+//! still does), and no triangle around it flips or degenerates. Vertices nearest
 //! to the input's sharp edges and corners go onto them instead
 //! (feature_targets.h), so the extraction's chamfers disappear. Moves that would
 //! make two triangles cross (crossing_pairs.h) are undone; crossings where
