@@ -122,6 +122,15 @@ void check_budget(const Mesh& outer, const HollowOptions& o, double voxel) {
     throw Error(FABVDB_ERR_OUT_OF_BUDGET, message.str());
 }
 
+// Whether `mesh`, a clean solid in doubles, stays one with every coordinate
+// rounded to the nearest float, as an STL file holds it. The crossings of
+// overlapping shells, cut in doubles, may lie closer than a float step.
+bool clean_in_floats(Mesh mesh, Progress& progress) {
+    for (Vec3& p : mesh.vertices)
+        for (double& c : p) c = double(float(c));
+    return check_solid(mesh, progress).clean;
+}
+
 Mesh flipped(Mesh mesh) {
     for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
     return mesh;
@@ -152,8 +161,8 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     result.voxel_size = voxel;
 
     // The outer surface: the input itself when it is clean, its shells' union
-    // when only crossings spoil it, else the surface of its robust signed
-    // distance.
+    // when only crossings spoil it and the union survives float rounding,
+    // else the surface of its robust signed distance.
     check_budget(input, options, voxel);
     Mesh outer;
     const SolidCheck check = check_solid(input, progress);
@@ -161,6 +170,7 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     std::optional<Mesh> resolved;
     if (!check.crossings.empty()) {
         resolved = resolve_crossings(input, check.crossings, progress);
+        if (resolved && !clean_in_floats(*resolved, progress)) resolved.reset();
         clock.lap("resolve crossings");
     }
     if (check.clean) {
