@@ -78,7 +78,10 @@ bool keyword_is(std::string_view token, std::string_view keyword) {
 Mesh read_binary(const std::string& bytes, const std::string& path, Progress& progress) {
     BinaryReader reader(bytes, path, /*big_endian=*/false);
     reader.skip(header_bytes, "the 80-byte header");
-    const uint32_t count = reader.read<uint32_t>("the triangle count");
+    uint64_t count = reader.read<uint32_t>("the triangle count");
+    // A count of 0 before whole facets: the writer never filled it in.
+    const uint64_t body = bytes.size() > header_bytes + 4 ? bytes.size() - (header_bytes + 4) : 0;
+    if (count == 0 && body > 0 && body % facet_bytes == 0) count = body / facet_bytes;
     const uint64_t needed = header_bytes + 4 + uint64_t{facet_bytes} * count;
     if (needed > bytes.size())
         throw Error(FABVDB_ERR_BAD_INPUT, path + ": truncated binary STL: the header announces " +
@@ -88,7 +91,7 @@ Mesh read_binary(const std::string& bytes, const std::string& path, Progress& pr
     mesh.triangles.reserve(count);
     CornerWelder welder(mesh);
     welder.reserve(count / 2 + 3);
-    for (uint32_t t = 0; t < count; ++t) {
+    for (uint64_t t = 0; t < count; ++t) {
         reader.skip(12, "a facet normal");
         Triangle triangle;
         for (uint32_t& corner : triangle) {

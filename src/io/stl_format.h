@@ -4,7 +4,8 @@
 //! begins with "solid" and holds no NUL byte is ASCII (several `solid` blocks,
 //! CRLF line ends, any keyword case, polygon loops fan-triangulated); anything
 //! else is binary, and rejected if its count announces more triangles than it
-//! holds. Corners with bit-identical coordinates become one vertex, so the
+//! holds; a binary count of 0 with whole facets after it (a writer that never
+//! filled the count in) reads the facets the file holds. Corners with bit-identical coordinates become one vertex, so the
 //! vertices are the distinct positions in order of first appearance. Writing
 //! produces binary STL (single precision, as the format stores).
 #pragma once

@@ -111,7 +111,9 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         return result;
     }
     const openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
-    if (!holds_inside(*cavity)) {
+    // Voids with no voxel inside, or only crumbs of one that the surface
+    // extraction drops as noise, trap no powder the model can see.
+    if (!holds_inside(*cavity) || volume::extract_mesh(*cavity, 0.0, progress).triangles.empty()) {
         result.warnings.push_back(options.input_name +
                                   ": the part's voids are thinner than a voxel, so no powder is trapped: no drain "
                                   "holes are needed and the part is returned undrilled");

@@ -1,4 +1,5 @@
-// STL: binary round trip, content sniffing, exact welding, ASCII variants, truncation.
+// STL: binary round trip, content sniffing, a binary count left at 0, exact
+// welding, ASCII variants, truncation.
 #include "io/stl_format.h"
 
 #include <gtest/gtest.h>
@@ -75,6 +76,19 @@ TEST(StlFormat, BinaryFileWhoseHeaderSaysSolidIsReadAsBinary) {
     ASSERT_EQ(mesh.triangles.size(), 2u);
     EXPECT_EQ(mesh.triangles[1], (Triangle{0, 2, 3}));
     EXPECT_EQ(mesh.vertices[3], d);
+}
+
+TEST(StlFormat, BinaryCountOfZeroBeforeWholeFacetsReadsTheFacets) {
+    // Some writers never fill the count in: 0, then facets to the end.
+    TempDir dir;
+    const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
+    const Mesh mesh =
+        read(write_bytes(dir.file("no_count.stl"), binary_stl("", 0, {{a, b, c}, {a, c, d}, {a, d, b}})));
+    ASSERT_EQ(mesh.triangles.size(), 3u);
+    EXPECT_EQ(mesh.triangles[2], (Triangle{0, 3, 1}));
+    // A partial facet after the count of 0 is not a file of facets.
+    expect_read_error(write_bytes(dir.file("ragged.stl"), binary_stl("", 0, {{a, b, c}}) + "xyz"),
+                      FABVDB_ERR_BAD_INPUT, "no triangles");
 }
 
 TEST(StlFormat, OnlyBitIdenticalCornersAreWelded) {
