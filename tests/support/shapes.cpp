@@ -69,6 +69,22 @@ Mesh merged(const Mesh& a, const Mesh& b) {
     return out;
 }
 
+Mesh loose_triangles(const std::vector<std::array<Vec3, 3>>& corners) {
+    Mesh mesh;
+    for (const auto& t : corners) {
+        const uint32_t first = uint32_t(mesh.vertices.size());
+        mesh.vertices.insert(mesh.vertices.end(), t.begin(), t.end());
+        mesh.triangles.push_back({first, first + 1, first + 2});
+    }
+    return mesh;
+}
+
+Mesh unwelded(const Mesh& mesh) {
+    std::vector<std::array<Vec3, 3>> corners;
+    for (const auto& t : mesh.triangles) corners.push_back({mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]});
+    return loose_triangles(corners);
+}
+
 double mesh_volume(const Mesh& mesh) {
     double six_volume = 0;
     for (const Triangle& t : mesh.triangles) {

@@ -3,6 +3,9 @@
 //! icospheres and tori, with their exact volumes for the checks.
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include "core/mesh.h"
 
 namespace fabvdb::test {
@@ -22,6 +25,10 @@ Mesh make_standing_torus(double major, double minor, int segments_major, int seg
 Mesh flipped(Mesh mesh);
 //! Two meshes as one (vertex indices of `b` shifted).
 Mesh merged(const Mesh& a, const Mesh& b);
+//! Loose triangles given by their corners: each its own three vertices.
+Mesh loose_triangles(const std::vector<std::array<Vec3, 3>>& corners);
+//! The same triangles, each on its own three vertices (nothing welded).
+Mesh unwelded(const Mesh& mesh);
 //! Signed volume by the divergence theorem (positive for outward closed meshes).
 double mesh_volume(const Mesh& mesh);
 

@@ -19,16 +19,6 @@ namespace {
 
 using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
 
-Mesh loose(const std::vector<std::array<Vec3, 3>>& triangles) {
-    Mesh mesh;
-    for (const auto& t : triangles) {
-        const uint32_t first = uint32_t(mesh.vertices.size());
-        mesh.vertices.insert(mesh.vertices.end(), t.begin(), t.end());
-        mesh.triangles.push_back({first, first + 1, first + 2});
-    }
-    return mesh;
-}
-
 Pairs pairs_of(const Mesh& mesh) {
     Progress progress;
     return self_intersecting_pairs(mesh, progress);
@@ -49,26 +39,26 @@ TEST(SelfIntersections, CleanShapesHaveNone) {
 
 TEST(SelfIntersections, LooseTrianglesMeetingOrTouching) {
     // Piercing.
-    EXPECT_EQ(pairs_of(loose({flat, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.6, 0.4, 1}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.6, 0.4, 1}}}})), (Pairs{{0, 1}}));
     // A corner resting on the interior: touching counts.
-    EXPECT_EQ(pairs_of(loose({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})), (Pairs{{0, 1}}));
     // Lifted off by 1e-9: apart.
-    EXPECT_TRUE(pairs_of(loose({flat, {{{0.5, 0.5, 1e-9}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})).empty());
+    EXPECT_TRUE(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, 1e-9}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})).empty());
     // Coplanar overlap, and coplanar across the hypotenuse (boxes overlapping).
-    EXPECT_EQ(pairs_of(loose({flat, {{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}})), (Pairs{{0, 1}}));
-    EXPECT_TRUE(pairs_of(loose({flat, {{{2, 0.1, 0}, {2, 2, 0}, {0.1, 2, 0}}}})).empty());
+    EXPECT_EQ(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}})), (Pairs{{0, 1}}));
+    EXPECT_TRUE(pairs_of(test::loose_triangles({flat, {{{2, 0.1, 0}, {2, 2, 0}, {0.1, 2, 0}}}})).empty());
     // Three triangles: the last pierces the first only, listed as (0, 2).
-    EXPECT_EQ(pairs_of(loose({flat, {{{5, 5, 0}, {6, 5, 0}, {5, 6, 0}}}, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.6, 0.4, 1}}}})),
+    EXPECT_EQ(pairs_of(test::loose_triangles({flat, {{{5, 5, 0}, {6, 5, 0}, {5, 6, 0}}}, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.6, 0.4, 1}}}})),
               (Pairs{{0, 2}}));
 }
 
 TEST(SelfIntersections, SharedPositionsAreNeighboursNotIntersections) {
     // An unwelded seam: the second triangle has its own copies of the
     // first's hypotenuse ends.
-    EXPECT_TRUE(pairs_of(loose({flat, {{{2, 0, 0}, {2, 2, 0}, {0, 2, 0}}}})).empty());
+    EXPECT_TRUE(pairs_of(test::loose_triangles({flat, {{{2, 0, 0}, {2, 2, 0}, {0, 2, 0}}}})).empty());
     // Sharing one corner by position and piercing elsewhere: not reported
     // either (the pair shares a vertex position).
-    EXPECT_TRUE(pairs_of(loose({flat, {{{0, 0, 0}, {1, 1, -1}, {0.2, 0.2, 1}}}})).empty());
+    EXPECT_TRUE(pairs_of(test::loose_triangles({flat, {{{0, 0, 0}, {1, 1, -1}, {0.2, 0.2, 1}}}})).empty());
     // The same, the corner shared by index.
     Mesh mesh;
     mesh.vertices = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, -1}, {0.2, 0.2, 1}};
@@ -82,14 +72,14 @@ TEST(SelfIntersections, SharedPositionsAreNeighboursNotIntersections) {
 
 TEST(SelfIntersections, DegenerateTrianglesAreTheirSegmentOrPoint) {
     // A needle (three collinear corners) through the flat triangle.
-    EXPECT_EQ(pairs_of(loose({flat, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.5, 0.5, 0.3}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.5, 0.5, 0.3}}}})), (Pairs{{0, 1}}));
     // The same needle beside it.
-    EXPECT_TRUE(pairs_of(loose({flat, {{{1.5, 1.5, -1}, {1.5, 1.5, 1}, {1.5, 1.5, 0.3}}}})).empty());
+    EXPECT_TRUE(pairs_of(test::loose_triangles({flat, {{{1.5, 1.5, -1}, {1.5, 1.5, 1}, {1.5, 1.5, 0.3}}}})).empty());
     // A needle ending on the plane inside the triangle: touching.
-    EXPECT_EQ(pairs_of(loose({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 1}, {0.5, 0.5, 0.4}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 1}, {0.5, 0.5, 0.4}}}})), (Pairs{{0, 1}}));
     // A point (all corners equal) on the triangle, and one just above it.
-    EXPECT_EQ(pairs_of(loose({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 0}, {0.5, 0.5, 0}}}})), (Pairs{{0, 1}}));
-    EXPECT_TRUE(pairs_of(loose({flat, {{{0.5, 0.5, 1e-9}, {0.5, 0.5, 1e-9}, {0.5, 0.5, 1e-9}}}})).empty());
+    EXPECT_EQ(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 0}, {0.5, 0.5, 0}}}})), (Pairs{{0, 1}}));
+    EXPECT_TRUE(pairs_of(test::loose_triangles({flat, {{{0.5, 0.5, 1e-9}, {0.5, 0.5, 1e-9}, {0.5, 0.5, 1e-9}}}})).empty());
 }
 
 TEST(SelfIntersections, BoxCutAtHalfHeightMeetsItsSideTriangles) {

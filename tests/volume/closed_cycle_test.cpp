@@ -15,18 +15,8 @@ using fabvdb::Mesh;
 using fabvdb::test::flipped;
 using fabvdb::test::make_box;
 using fabvdb::test::merged;
+using fabvdb::test::unwelded;
 using fabvdb::volume::is_closed_cycle;
-
-// Every triangle on its own three vertices.
-Mesh unwelded(const Mesh& mesh) {
-    Mesh out;
-    for (const auto& t : mesh.triangles) {
-        const uint32_t base = uint32_t(out.vertices.size());
-        for (uint32_t v : t) out.vertices.push_back(mesh.vertices[v]);
-        out.triangles.push_back({base, base + 1, base + 2});
-    }
-    return out;
-}
 
 TEST(ClosedCycle, ClosedShells) {
     EXPECT_TRUE(is_closed_cycle(make_box({0, 0, 0}, {1, 2, 3})));

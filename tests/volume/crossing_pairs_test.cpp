@@ -19,17 +19,6 @@ namespace {
 
 using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
 
-// A mesh of loose triangles given by their corners (no index shared).
-Mesh loose(const std::vector<std::array<Vec3, 3>>& triangles) {
-    Mesh mesh;
-    for (const auto& t : triangles) {
-        const uint32_t first = uint32_t(mesh.vertices.size());
-        mesh.vertices.insert(mesh.vertices.end(), t.begin(), t.end());
-        mesh.triangles.push_back({first, first + 1, first + 2});
-    }
-    return mesh;
-}
-
 // The unit box plus a triangle in the plane z = 0.5 whose shadow holds the
 // box's (x + y <= 3 around [0, 1]²): it cuts every side triangle of the box
 // (each has corners at z = 0 and z = 1) and misses the top and bottom.
@@ -45,25 +34,25 @@ Mesh box_with_blade() {
 
 TEST(CrossingPairs, FewerThanTwoTrianglesHaveNone) {
     EXPECT_TRUE(crossing_pairs(Mesh{}).empty());
-    EXPECT_TRUE(crossing_pairs(loose({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}})).empty());
+    EXPECT_TRUE(crossing_pairs(test::loose_triangles({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}})).empty());
 }
 
 TEST(CrossingPairs, SeparateTrianglesCrossWhenTheyMeetOrTouch) {
     const std::array<Vec3, 3> flat = {{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}};
     // Piercing: a vertical triangle through the flat one's interior.
-    EXPECT_EQ(crossing_pairs(loose({flat, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.6, 0.4, 1}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(crossing_pairs(test::loose_triangles({flat, {{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {0.6, 0.4, 1}}}})), (Pairs{{0, 1}}));
     // Parallel, 0.1 above: apart, though their boxes nearly meet.
-    EXPECT_TRUE(crossing_pairs(loose({flat, {{{0, 0, 0.1}, {2, 0, 0.1}, {0, 2, 0.1}}}})).empty());
+    EXPECT_TRUE(crossing_pairs(test::loose_triangles({flat, {{{0, 0, 0.1}, {2, 0, 0.1}, {0, 2, 0.1}}}})).empty());
     // A corner resting on the flat one's interior: closed sets touch.
-    EXPECT_EQ(crossing_pairs(loose({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(crossing_pairs(test::loose_triangles({flat, {{{0.5, 0.5, 0}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})), (Pairs{{0, 1}}));
     // The same corner lifted by 1e-9: apart.
-    EXPECT_TRUE(crossing_pairs(loose({flat, {{{0.5, 0.5, 1e-9}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})).empty());
+    EXPECT_TRUE(crossing_pairs(test::loose_triangles({flat, {{{0.5, 0.5, 1e-9}, {0.5, 0.5, 1}, {1, 0.5, 1}}}})).empty());
     // Coplanar, overlapping.
-    EXPECT_EQ(crossing_pairs(loose({flat, {{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(crossing_pairs(test::loose_triangles({flat, {{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}})), (Pairs{{0, 1}}));
     // Coplanar across the hypotenuse x + y = 2, boxes overlapping: apart.
-    EXPECT_TRUE(crossing_pairs(loose({flat, {{{2, 0.1, 0}, {2, 2, 0}, {0.1, 2, 0}}}})).empty());
+    EXPECT_TRUE(crossing_pairs(test::loose_triangles({flat, {{{2, 0.1, 0}, {2, 2, 0}, {0.1, 2, 0}}}})).empty());
     // An unwelded seam: the same edge in both, by position only, touches.
-    EXPECT_EQ(crossing_pairs(loose({flat, {{{2, 0, 0}, {2, 2, 0}, {0, 2, 0}}}})), (Pairs{{0, 1}}));
+    EXPECT_EQ(crossing_pairs(test::loose_triangles({flat, {{{2, 0, 0}, {2, 2, 0}, {0, 2, 0}}}})), (Pairs{{0, 1}}));
 }
 
 TEST(CrossingPairs, SharedVertexCrossesOnlyAwayFromIt) {

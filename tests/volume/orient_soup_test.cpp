@@ -24,17 +24,7 @@ using test::flipped;
 using test::make_box;
 using test::merged;
 using test::mesh_volume;
-
-// Every triangle with its own three vertices (nothing welded).
-Mesh unwelded(const Mesh& mesh) {
-    Mesh soup;
-    for (const Triangle& t : mesh.triangles) {
-        const uint32_t first = uint32_t(soup.vertices.size());
-        for (uint32_t v : t) soup.vertices.push_back(mesh.vertices[v]);
-        soup.triangles.push_back({first, first + 1, first + 2});
-    }
-    return soup;
-}
+using test::unwelded;
 
 // The triangles as unordered sets of corner positions, with multiplicity.
 std::multiset<std::array<Vec3, 3>> corner_sets(const Mesh& mesh) {

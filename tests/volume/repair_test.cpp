@@ -264,12 +264,7 @@ TEST(Repair, DirtyVariantsGiveTheSameSolid) {
         }
         EXPECT_NEAR(reference, 62.0 * 42.0 * 42.0 * double(inside) / double(count), 0.02 * reference);
     }
-    Mesh soup;  // every triangle with its own three corners
-    for (const auto& t : clean.triangles) {
-        const uint32_t first = uint32_t(soup.vertices.size());
-        for (uint32_t v : t) soup.vertices.push_back(clean.vertices[v]);
-        soup.triangles.push_back({first, first + 1, first + 2});
-    }
+    const Mesh soup = fabvdb::test::unwelded(clean);  // every triangle with its own three corners
     Mesh scrambled = clean;  // inconsistent: every third triangle flipped
     for (size_t i = 0; i < scrambled.triangles.size(); i += 3) std::swap(scrambled.triangles[i][1], scrambled.triangles[i][2]);
     const std::pair<const char*, Mesh> variants[] = {
