@@ -358,10 +358,10 @@ private:
         undo.axes.assign(axes.begin(), axes.end());
         update_moldability_terms(shell_, undo.triangles, undo.axes, terms_);
         const std::vector<int> parts(touched.begin(), touched.end());
-        for (int p : parts) undo.parts.push_back({p, d_.parts[p]});
+        for (int p : parts) undo.parts.push_back({p, std::move(d_.parts[p])});
         tbb::parallel_for(size_t(0), parts.size(), [&](size_t i) {
-            const int p = parts[i];
-            d_.parts[p] = parting_line(shell_, terms_, d_.part_of_triangle, p, d_.parts[p].direction, options_.weights);
+            d_.parts[parts[i]] = parting_line(shell_, terms_, d_.part_of_triangle, parts[i],
+                                              undo.parts[i].second.direction, options_.weights);
         });
         return parts;
     }

@@ -1,9 +1,12 @@
-//! part_surface: prism tops, bottoms and boundary sides of one part, with
-//! adjacency from matching opposite half-edges (all matches are linked, so a
-//! boundary that pinches at a vertex still gives a connected surface graph).
+//! part_surface: prism tops, bottoms and boundary sides of one part. The
+//! adjacency comes from S_low's edge neighbours for the tops and bottoms and
+//! from the side quads' own layout; the vertical side edges are matched by
+//! vertex, every match linked, so a boundary that pinches at a vertex still
+//! gives a connected surface graph. Linear in the part's size (plus a sort of
+//! its boundary corners).
 #include "surface/part_surface.h"
 
-#include <unordered_map>
+#include <algorithm>
 
 #include "surface/vec3_ops.h"
 
@@ -41,18 +44,62 @@ PartSurface part_surface(const Shell& shell, const std::vector<int>& part_of_tri
             add(PartSurface::side, uint32_t(3 * t + k), {a, v_count + b, b});
         }
     }
-    std::unordered_multimap<uint64_t, uint32_t> half_edges;
-    half_edges.reserve(3 * s.size());
-    const auto key = [](uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; };
-    for (uint32_t i = 0; i < s.size(); ++i)
-        for (int k = 0; k < 3; ++k) half_edges.emplace(key(s.corners[i][k], s.corners[i][(k + 1) % 3]), i);
-    s.adjacent.resize(s.size());
-    for (uint32_t i = 0; i < s.size(); ++i)
-        for (int k = 0; k < 3; ++k) {
-            const auto range = half_edges.equal_range(key(s.corners[i][(k + 1) % 3], s.corners[i][k]));
-            for (auto it = range.first; it != range.second; ++it)
-                if (it->second != i) s.adjacent[i].push_back(it->second);
+    // Where each prism's faces are: top, bottom, and the first of the two
+    // side triangles of each boundary edge 3t + k ({a, a', b'}, then {a, b', b}).
+    constexpr uint32_t none = uint32_t(-1);
+    std::vector<uint32_t> top(shell.triangle_count(), none), bottom(shell.triangle_count(), none);
+    std::vector<uint32_t> side_first(3 * shell.triangle_count(), none);
+    std::vector<std::pair<uint32_t, uint32_t>> starting, ending;  // (vertex, side triangle) of vertical edges
+    for (uint32_t i = 0; i < s.size(); ++i) {
+        if (s.kind[i] == PartSurface::outer) top[s.source[i]] = i;
+        if (s.kind[i] == PartSurface::inner) bottom[s.source[i]] = i;
+        if (s.kind[i] == PartSurface::side && side_first[s.source[i]] == none) {
+            side_first[s.source[i]] = i;
+            starting.emplace_back(s.corners[i][0], i);        // {a, a', b'}: the edge a → a'
+            ending.emplace_back(s.corners[i + 1][2], i + 1);  // {a, b', b}: the edge b' → b
         }
+    }
+    std::sort(starting.begin(), starting.end());
+    std::sort(ending.begin(), ending.end());
+    const auto link_vertical = [](const std::vector<std::pair<uint32_t, uint32_t>>& list, uint32_t vertex,
+                                  std::vector<uint32_t>& adjacent) {
+        auto it = std::lower_bound(list.begin(), list.end(), std::make_pair(vertex, uint32_t(0)));
+        for (; it != list.end() && it->first == vertex; ++it) adjacent.push_back(it->second);
+    };
+    s.adjacency_start.assign(1, 0);
+    s.adjacency.reserve(3 * s.size() + 2 * starting.size());
+    std::vector<uint32_t>& adjacent = s.adjacency;
+    for (uint32_t i = 0; i < s.size(); ++i) {
+        if (s.kind[i] == PartSurface::side) {
+            const uint32_t t = s.source[i] / 3;
+            if (side_first[s.source[i]] == i) {
+                // {a, a', b'}: a → a' meets the quads ending at a, a' → b' the bottom, b' → a its twin.
+                link_vertical(ending, s.corners[i][0], adjacent);
+                adjacent.push_back(bottom[t]);
+                adjacent.push_back(i + 1);
+            } else {
+                // {a, b', b}: a → b' its twin, b' → b the quads starting at b, b → a the top.
+                adjacent.push_back(i - 1);
+                link_vertical(starting, s.corners[i][2], adjacent);
+                adjacent.push_back(top[t]);
+            }
+            s.adjacency_start.push_back(uint32_t(adjacent.size()));
+            continue;
+        }
+        const uint32_t t = s.source[i];
+        const bool outer = s.kind[i] == PartSurface::outer;
+        // The top's corner edges are S_low's edges 0, 1, 2; the bottom's
+        // (reversed) are S_low's edges 2, 1, 0.
+        for (int j = 0; j < 3; ++j) {
+            const int k = outer ? j : 2 - j;
+            const int u = shell.neighbor[t][k];
+            if (part_of_triangle[u] == part)
+                adjacent.push_back(outer ? top[u] : bottom[u]);
+            else
+                adjacent.push_back(side_first[3 * t + k] + (outer ? 1 : 0));
+        }
+        s.adjacency_start.push_back(uint32_t(adjacent.size()));
+    }
     return s;
 }
 

@@ -24,8 +24,21 @@ struct PartSurface {
     std::vector<std::array<uint32_t, 3>> corners;
     std::vector<Vec3> normal;
     std::vector<double> area;
-    std::vector<std::vector<uint32_t>> adjacent;
+    //! Edge-adjacent surface triangles, in compressed rows: those of triangle i
+    //! are adjacency[adjacency_start[i] .. adjacency_start[i + 1]).
+    std::vector<uint32_t> adjacency_start, adjacency;
     size_t size() const { return kind.size(); }
+
+    struct Neighbours {
+        const uint32_t* first;
+        const uint32_t* last;
+        const uint32_t* begin() const { return first; }
+        const uint32_t* end() const { return last; }
+        size_t size() const { return size_t(last - first); }
+    };
+    Neighbours adjacent(size_t i) const {
+        return {adjacency.data() + adjacency_start[i], adjacency.data() + adjacency_start[i + 1]};
+    }
 };
 
 //! The surface of the part made of the outer triangles t with part_of_triangle[t] == part.

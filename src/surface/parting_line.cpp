@@ -10,7 +10,7 @@
 // Boost.Graph's edge iterators trip GCC's -Wmaybe-uninitialized (false positive).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #pragma GCC diagnostic pop
 #include <tbb/enumerable_thread_specific.h>
@@ -22,72 +22,106 @@ namespace fabvdb::surface {
 
 namespace {
 
-using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
-struct EdgeData {
-    double capacity = 0;
-    double residual = 0;
-    Traits::edge_descriptor reverse;
-};
-struct VertexData {
-    boost::default_color_type color{};
-    long distance = 0;
-    Traits::edge_descriptor predecessor;
-};
-using FlowGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, VertexData, EdgeData>;
+using Graph = boost::compressed_sparse_row_graph<boost::directedS>;
+using GraphEdge = boost::graph_traits<Graph>::edge_descriptor;
 
-//! The flow network of one part surface. Its structure and the binary
-//! capacities do not depend on the direction, so one network serves every
-//! candidate: only the terminal capacities are set per direction.
+//! The flow network of one part surface, in compressed sparse rows (built in
+//! one pass: a few allocations, not one per vertex). Its structure and the
+//! binary capacities do not depend on the direction, so one network serves
+//! every candidate: only the terminal capacities are set per direction.
 class CutNetwork {
 public:
-    explicit CutNetwork(const PartSurface& s) : s_(s), g_(s.size() + 2) {
-        const size_t n = s.size();
-        source_edge_.resize(n);
-        sink_edge_.resize(n);
-        for (size_t i = 0; i < n; ++i) {
-            source_edge_[i] = add_edge_pair(n, i, 0.0, 0.0);
-            sink_edge_[i] = add_edge_pair(i, n + 1, 0.0, 0.0);
-            for (uint32_t j : s.adjacent[i])
-                if (j > i) {
-                    const double w = std::max(0.0, dot(s.normal[i], s.normal[j]));
-                    add_edge_pair(i, j, w, w);
-                }
+    explicit CutNetwork(const PartSurface& s) : s_(s), n_(s.size()) {
+        // Out-edges in vertex order: each surface triangle's to the source,
+        // to the sink and to its neighbours; then the source's and the
+        // sink's to every triangle. An edge's index is its position.
+        std::vector<std::pair<size_t, size_t>> edges;
+        for (size_t i = 0; i < n_; ++i) {
+            edges.emplace_back(i, n_);
+            edges.emplace_back(i, n_ + 1);
+            for (uint32_t j : s.adjacent(i)) edges.emplace_back(i, j);
         }
+        for (size_t terminal = n_; terminal < n_ + 2; ++terminal)
+            for (size_t i = 0; i < n_; ++i) edges.emplace_back(terminal, i);
+        graph_ = Graph(boost::edges_are_sorted, edges.begin(), edges.end(), n_ + 2);
+        const size_t m = edges.size();
+        capacity_.assign(m, 0.0);
+        residual_.assign(m, 0.0);
+        reverse_.resize(m);
+        std::vector<GraphEdge> edge_at(m);
+        for (size_t v = 0; v < n_ + 2; ++v)
+            for (auto [e, end] = boost::out_edges(v, graph_); e != end; ++e) edge_at[(*e).idx] = *e;
+        first_out_.resize(n_);
+        for (size_t i = 0, at = 0; i < n_; at += 2 + s.adjacent(i).size(), ++i) first_out_[i] = at;
+        const size_t from_source = m - 2 * n_, from_sink = m - n_;
+        for (size_t i = 0; i < n_; ++i) {
+            size_t at = first_out_[i];
+            pair(at, from_source + i);
+            pair(at + 1, from_sink + i);
+            at += 2;
+            const PartSurface::Neighbours around = s.adjacent(i);
+            for (size_t k = 0; k < around.size(); ++k, ++at) {
+                const uint32_t j = around.first[k];
+                if (j < i) continue;  // paired from j's side
+                // The k-th entry j of i's list pairs with the entry i of j's
+                // list of the same rank among equal entries.
+                const size_t rank = size_t(std::count(around.begin(), around.begin() + k, j));
+                const size_t back = first_out_[j] + 2 + nth_position(s.adjacent(j), uint32_t(i), rank);
+                const double w = std::max(0.0, dot(s.normal[i], s.normal[j]));
+                capacity_[at] = capacity_[back] = w;
+                pair(at, back);
+            }
+        }
+        for (size_t e = 0; e < m; ++e) reverse_edge_.push_back(edge_at[reverse_[e]]);
     }
 
     //! Per surface triangle: in M⁺ for direction d.
     std::vector<char> labels(const Vec3& d) {
-        const size_t n = s_.size();
-        for (size_t i = 0; i < n; ++i) {
+        const size_t from_source = capacity_.size() - 2 * n_;
+        for (size_t i = 0; i < n_; ++i) {
             const double facing = dot(s_.normal[i], d);
             const bool inner = s_.kind[i] == PartSurface::inner;
-            g_[source_edge_[i]].capacity = inner ? 0.0 : 1.0 + facing;
-            g_[sink_edge_[i]].capacity = inner ? 0.0 : 1.0 - facing;
+            // 1 + n·d and 1 − n·d less their common part 1 − |n·d|: the same
+            // minimum cut, with far less flow to push.
+            capacity_[from_source + i] = inner ? 0.0 : std::max(0.0, 2.0 * facing);
+            capacity_[first_out_[i] + 1] = inner ? 0.0 : std::max(0.0, -2.0 * facing);
         }
-        boost::boykov_kolmogorov_max_flow(g_, boost::get(&EdgeData::capacity, g_), boost::get(&EdgeData::residual, g_),
-                                          boost::get(&EdgeData::reverse, g_),
-                                          boost::get(&VertexData::predecessor, g_), boost::get(&VertexData::color, g_),
-                                          boost::get(&VertexData::distance, g_), boost::get(boost::vertex_index, g_),
-                                          n, n + 1);
-        std::vector<char> upper(n);
-        for (size_t i = 0; i < n; ++i) upper[i] = g_[i].color != boost::white_color;
+        std::vector<boost::default_color_type> color(n_ + 2);
+        std::vector<long> distance(n_ + 2, 0);
+        std::vector<GraphEdge> predecessor(n_ + 2);
+        const auto edge_index = boost::get(boost::edge_index, graph_);
+        boost::boykov_kolmogorov_max_flow(
+            graph_, boost::make_iterator_property_map(capacity_.begin(), edge_index),
+            boost::make_iterator_property_map(residual_.begin(), edge_index),
+            boost::make_iterator_property_map(reverse_edge_.begin(), edge_index),
+            boost::make_iterator_property_map(predecessor.begin(), boost::get(boost::vertex_index, graph_)),
+            boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, graph_)),
+            boost::make_iterator_property_map(distance.begin(), boost::get(boost::vertex_index, graph_)),
+            boost::get(boost::vertex_index, graph_), n_, n_ + 1);
+        std::vector<char> upper(n_);
+        for (size_t i = 0; i < n_; ++i) upper[i] = color[i] != boost::white_color;
         return upper;
     }
 
 private:
-    Traits::edge_descriptor add_edge_pair(size_t a, size_t b, double forward, double backward) {
-        const auto e = boost::add_edge(a, b, g_).first;
-        const auto r = boost::add_edge(b, a, g_).first;
-        g_[e].capacity = forward;
-        g_[r].capacity = backward;
-        g_[e].reverse = r;
-        g_[r].reverse = e;
-        return e;
+    static size_t nth_position(PartSurface::Neighbours list, uint32_t value, size_t rank) {
+        for (size_t k = 0; k < list.size(); ++k)
+            if (list.first[k] == value && rank-- == 0) return k;
+        return list.size();  // not reached: the adjacency is symmetric
+    }
+
+    void pair(size_t a, size_t b) {
+        reverse_[a] = b;
+        reverse_[b] = a;
     }
 
     const PartSurface& s_;
-    FlowGraph g_;
-    std::vector<Traits::edge_descriptor> source_edge_, sink_edge_;
+    const size_t n_;
+    Graph graph_;
+    std::vector<double> capacity_, residual_;
+    std::vector<size_t> reverse_;
+    std::vector<GraphEdge> reverse_edge_;
+    std::vector<size_t> first_out_;  //!< per triangle: its first out-edge (to the source; then the sink's)
 };
 
 //! Makes the M⁺ and M⁻ labels each one connected component (§3.4.4).
@@ -127,7 +161,7 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
             stack.pop_back();
             projected[c] += s.area[i] * std::abs(dot(s.normal[i], d));
             if (s.kind[i] == PartSurface::outer) outer_projected[c] += s.area[i] * std::abs(dot(s.normal[i], d));
-            for (uint32_t j : s.adjacent[i])
+            for (uint32_t j : s.adjacent(i))
                 if (component[j] < 0 && upper[j] == upper[start] && overlapping[j] == overlapping[start]) {
                     component[j] = c;
                     stack.push_back(j);
@@ -137,7 +171,7 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
     const size_t count = label.size();
     std::vector<std::vector<int>> links(count);
     for (size_t i = 0; i < n; ++i)
-        for (uint32_t j : s.adjacent[i])
+        for (uint32_t j : s.adjacent(i))
             if (component[i] != component[j]) links[component[i]].push_back(component[j]);
     for (auto& l : links) {
         std::sort(l.begin(), l.end());

@@ -47,8 +47,9 @@ PartSurface hand_surface() {
         s.corners.push_back({0, 0, 0});
         s.normal.push_back(normal);
         s.area.push_back(area);
-        s.adjacent.emplace_back();
+        s.adjacency_start.push_back(0);
     };
+    s.adjacency_start.push_back(0);
     add(PartSurface::outer, 0, {0, 0, -1}, 2.0);
     add(PartSurface::outer, 1, {0, 0, 1}, 3.0);
     add(PartSurface::inner, 0, {0, 0, -1}, 5.0);

@@ -102,9 +102,9 @@ TEST(PartSurface, AHalfGetsSideQuadsAlongItsBoundary) {
             EXPECT_GT(v, 0.0);
             both += v;
             // Each triangle's neighbours share an edge with it, the other way round.
-            ASSERT_EQ(s.adjacent.size(), s.size());
+            ASSERT_EQ(s.adjacency_start.size(), s.size() + 1);
             for (size_t i = 0; i < s.size(); ++i) {
-                EXPECT_GE(s.adjacent[i].size(), 3u) << i;
+                EXPECT_GE(s.adjacent(i).size(), 3u) << i;
                 EXPECT_NEAR(std::sqrt(s.normal[i][0] * s.normal[i][0] + s.normal[i][1] * s.normal[i][1] +
                                       s.normal[i][2] * s.normal[i][2]),
                             1.0, 1e-12);

@@ -32,7 +32,7 @@ int pieces(const fabvdb::surface::PartMolding& molding, char side) {
         while (!queue.empty()) {
             const uint32_t t = queue.front();
             queue.pop();
-            for (uint32_t u : surface.adjacent[t])
+            for (uint32_t u : surface.adjacent(t))
                 if (!seen[u] && surface.kind[u] == fabvdb::surface::PartSurface::outer && molding.upper[u] == side) {
                     seen[u] = 1;
                     queue.push(u);
