@@ -177,23 +177,26 @@ std::vector<float> deformation_density(const Shell& shell, const MoldabilityTerm
 PartLines part_lines(const Shell& shell, const Decomposition& decomposition, size_t p) {
     const PartMolding& part = decomposition.parts[p];
     const PartSurface& s = part.surface;
-    // Parting line: edges between an M⁺ and an M⁻ triangle; part boundary:
-    // the outer edges of the prisms whose neighbour is in another part.
-    // Every face edge with its side (1: M⁺, 2: M⁻), sorted by edge: an edge
-    // seen from both sides is on the parting line (a sort, not a map: the
-    // studio asks for the lines after every edit).
-    std::vector<std::pair<Edge, char>> sides;
-    sides.reserve(3 * s.size());
-    for (size_t i = 0; i < s.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-            sides.emplace_back(std::minmax(s.corners[i][k], s.corners[i][(k + 1) % 3]), part.upper[i] ? 1 : 2);
-    std::sort(sides.begin(), sides.end());
+    // Parting line: the edges shared by an M⁺ and an M⁻ triangle (found along
+    // the surface's adjacency: linear, the studio asks after every edit);
+    // part boundary: the outer edges of the prisms whose neighbour is in
+    // another part.
     std::vector<Edge> parting, boundary;
-    for (size_t i = 0, j = 0; i < sides.size(); i = j) {
-        int seen = 0;
-        for (j = i; j < sides.size() && sides[j].first == sides[i].first; ++j) seen |= sides[j].second;
-        if (seen == 3) parting.push_back(sides[i].first);
-    }
+    for (uint32_t i = 0; i < s.size(); ++i)
+        for (uint32_t j : s.adjacent(i)) {
+            if (j < i || part.upper[i] == part.upper[j]) continue;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t a = s.corners[i][k], b = s.corners[i][(k + 1) % 3];
+                const auto& c = s.corners[j];
+                const bool has_a = c[0] == a || c[1] == a || c[2] == a, has_b = c[0] == b || c[1] == b || c[2] == b;
+                if (has_a && has_b) {
+                    parting.push_back(std::minmax(a, b));
+                    break;
+                }
+            }
+        }
+    std::sort(parting.begin(), parting.end());
+    parting.erase(std::unique(parting.begin(), parting.end()), parting.end());
     for (size_t i = 0; i < s.size(); ++i) {
         if (s.kind[i] != PartSurface::outer) continue;
         const uint32_t t = s.source[i];

@@ -94,8 +94,8 @@ struct Change {
 };
 
 //! The overlaps along `axis`. With a `change`, only the pairs of a changed
-//! triangle are measured again (its box against the grid); the previous
-//! pairs of unchanged triangles are kept.
+//! triangle are measured again; the previous pairs of unchanged triangles
+//! are kept.
 MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& axis, const Change* change) {
     const size_t n = shell.triangle_count();
     const auto [u, v] = projection_basis(axis);
@@ -118,6 +118,30 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
         mean_size += (box.hi[0] - box.lo[0]) + (box.hi[1] - box.lo[1]);
     }
     mean_size = std::max(mean_size / (2.0 * n), 1e-12);
+    const double area_scale = shell.unit_scale * shell.unit_scale;
+    const double tiny = 1e-9 * mean_size * mean_size;
+    struct Pair {
+        uint32_t a, b;
+        float area;
+    };
+    std::vector<Pair> found;  // each overlapping pair once
+    const auto boxes_meet = [&](uint32_t a, uint32_t b) {
+        return std::max(boxes[a].lo[0], boxes[b].lo[0]) <= std::min(boxes[a].hi[0], boxes[b].hi[0]) &&
+               std::max(boxes[a].lo[1], boxes[b].lo[1]) <= std::min(boxes[a].hi[1], boxes[b].hi[1]);
+    };
+    // Boxes known to meet: the shared projected area, if the two face alike.
+    const auto measure = [&](uint32_t a, uint32_t b) {
+        if (dot(shell.normal[a], axis) * dot(shell.normal[b], axis) < 0) return;
+        // Edge neighbours facing alike project to opposite sides of their
+        // shared edge (they run it in opposite senses): no common area.
+        const auto& around = shell.neighbor[a];
+        if (around[0] == int(b) || around[1] == int(b) || around[2] == int(b)) return;
+        const double shared = intersection_area(projected[a], projected[b]);
+        if (shared <= tiny) return;
+        found.push_back({a, b, float(shared * area_scale)});
+    };
+    // A grid of cells twice the mean box size; a pair is measured in the one
+    // cell that holds the lower corner of the overlap of its boxes.
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     for (const Box2& b : boxes)
         for (int k = 0; k < 2; ++k) {
@@ -130,65 +154,65 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
     const auto cell_of = [&](double value, int k) {
         return std::clamp(int((value - lo[k]) / cell), 0, (k == 0 ? nx : ny) - 1);
     };
-    std::vector<uint32_t> cell_start(size_t(nx) * ny + 1, 0);
-    for (size_t t = 0; t < n; ++t) {
-        if (!usable[t]) continue;
-        for (int j = cell_of(boxes[t].lo[1], 1); j <= cell_of(boxes[t].hi[1], 1); ++j)
-            for (int i = cell_of(boxes[t].lo[0], 0); i <= cell_of(boxes[t].hi[0], 0); ++i)
-                ++cell_start[size_t(j) * nx + i + 1];
-    }
-    for (size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
-    std::vector<uint32_t> cell_items(cell_start.back());
-    std::vector<uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
-    for (size_t t = 0; t < n; ++t) {
-        if (!usable[t]) continue;
-        for (int j = cell_of(boxes[t].lo[1], 1); j <= cell_of(boxes[t].hi[1], 1); ++j)
-            for (int i = cell_of(boxes[t].lo[0], 0); i <= cell_of(boxes[t].hi[0], 0); ++i)
-                cell_items[fill[size_t(j) * nx + i]++] = uint32_t(t);
-    }
-    const double area_scale = shell.unit_scale * shell.unit_scale;
-    const double tiny = 1e-9 * mean_size * mean_size;
-    struct Pair {
-        uint32_t a, b;
-        float area;
+    const auto measure_in_cell = [&](uint32_t a, uint32_t b, int i, int j) {
+        if (boxes_meet(a, b) && cell_of(std::max(boxes[a].lo[0], boxes[b].lo[0]), 0) == i &&
+            cell_of(std::max(boxes[a].lo[1], boxes[b].lo[1]), 1) == j)
+            measure(a, b);
     };
-    std::vector<Pair> found;  // each overlapping pair once
-    // A pair is measured in the one cell that holds the lower corner of the
-    // overlap of its boxes.
-    const auto measure = [&](uint32_t a, uint32_t b, int i, int j) {
-        const Box2& ba = boxes[a];
-        const Box2& bb = boxes[b];
-        const double overlap_lo_x = std::max(ba.lo[0], bb.lo[0]);
-        const double overlap_lo_y = std::max(ba.lo[1], bb.lo[1]);
-        if (overlap_lo_x > std::min(ba.hi[0], bb.hi[0]) || overlap_lo_y > std::min(ba.hi[1], bb.hi[1])) return;
-        if (cell_of(overlap_lo_x, 0) != i || cell_of(overlap_lo_y, 1) != j) return;
-        if (dot(shell.normal[a], axis) * dot(shell.normal[b], axis) < 0) return;
-        // Edge neighbours facing alike project to opposite sides of their
-        // shared edge (they run it in opposite senses): no common area.
-        const auto& around = shell.neighbor[a];
-        if (around[0] == int(b) || around[1] == int(b) || around[2] == int(b)) return;
-        const double shared = intersection_area(projected[a], projected[b]);
-        if (shared <= tiny) return;
-        found.push_back({a, b, float(shared * area_scale)});
-    };
-    if (!change) {
-        for (int j = 0; j < ny; ++j)
-            for (int i = 0; i < nx; ++i) {
-                const size_t c = size_t(j) * nx + i;
-                for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x)
-                    for (uint32_t y = x + 1; y < cell_start[c + 1]; ++y) measure(cell_items[x], cell_items[y], i, j);
+    // A change of a few triangles (an edit's, a smoothing step's) skips the
+    // grid: each box against those that meet the changed boxes' hull.
+    constexpr size_t few = 64;
+    if (change && change->triangles.size() <= few) {
+        Box2 hull{{1e300, 1e300}, {-1e300, -1e300}};
+        for (uint32_t a : change->triangles)
+            for (int k = 0; k < 2; ++k) {
+                hull.lo[k] = std::min(hull.lo[k], boxes[a].lo[k]);
+                hull.hi[k] = std::max(hull.hi[k], boxes[a].hi[k]);
             }
+        for (uint32_t b = 0; b < n; ++b) {
+            if (!usable[b] || boxes[b].lo[0] > hull.hi[0] || boxes[b].hi[0] < hull.lo[0] ||
+                boxes[b].lo[1] > hull.hi[1] || boxes[b].hi[1] < hull.lo[1])
+                continue;
+            for (uint32_t a : change->triangles)
+                if (usable[a] && a != b && !(change->flag[b] && b < a) && boxes_meet(a, b)) measure(a, b);
+        }
     } else {
-        for (uint32_t a : change->triangles) {
-            if (!usable[a]) continue;
-            for (int j = cell_of(boxes[a].lo[1], 1); j <= cell_of(boxes[a].hi[1], 1); ++j)
-                for (int i = cell_of(boxes[a].lo[0], 0); i <= cell_of(boxes[a].hi[0], 0); ++i) {
+        std::vector<uint32_t> cell_start(size_t(nx) * ny + 1, 0);
+        for (size_t t = 0; t < n; ++t) {
+            if (!usable[t]) continue;
+            for (int j = cell_of(boxes[t].lo[1], 1); j <= cell_of(boxes[t].hi[1], 1); ++j)
+                for (int i = cell_of(boxes[t].lo[0], 0); i <= cell_of(boxes[t].hi[0], 0); ++i)
+                    ++cell_start[size_t(j) * nx + i + 1];
+        }
+        for (size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+        std::vector<uint32_t> cell_items(cell_start.back());
+        std::vector<uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
+        for (size_t t = 0; t < n; ++t) {
+            if (!usable[t]) continue;
+            for (int j = cell_of(boxes[t].lo[1], 1); j <= cell_of(boxes[t].hi[1], 1); ++j)
+                for (int i = cell_of(boxes[t].lo[0], 0); i <= cell_of(boxes[t].hi[0], 0); ++i)
+                    cell_items[fill[size_t(j) * nx + i]++] = uint32_t(t);
+        }
+        if (!change) {
+            for (int j = 0; j < ny; ++j)
+                for (int i = 0; i < nx; ++i) {
                     const size_t c = size_t(j) * nx + i;
-                    for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x) {
-                        const uint32_t b = cell_items[x];
-                        if (b != a && !(change->flag[b] && b < a)) measure(a, b, i, j);
-                    }
+                    for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x)
+                        for (uint32_t y = x + 1; y < cell_start[c + 1]; ++y)
+                            measure_in_cell(cell_items[x], cell_items[y], i, j);
                 }
+        } else {
+            for (uint32_t a : change->triangles) {
+                if (!usable[a]) continue;
+                for (int j = cell_of(boxes[a].lo[1], 1); j <= cell_of(boxes[a].hi[1], 1); ++j)
+                    for (int i = cell_of(boxes[a].lo[0], 0); i <= cell_of(boxes[a].hi[0], 0); ++i) {
+                        const size_t c = size_t(j) * nx + i;
+                        for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x) {
+                            const uint32_t b = cell_items[x];
+                            if (b != a && !(change->flag[b] && b < a)) measure_in_cell(a, b, i, j);
+                        }
+                    }
+            }
         }
     }
     // CSR: the kept pairs of unchanged triangles first, then the measured ones.
