@@ -148,20 +148,26 @@ class Studio {
   recolor(highlight = null, render = true) {
     if (!this.labels || !this.viewer.model) return;
     const n = this.labels.length;
-    const colors = new Float32Array(3 * n);
+    if (this.colors?.length !== 3 * n) this.colors = new Float32Array(3 * n);
+    const colors = this.colors;
     const sides = $('sides').checked;
     let highest = 0;
     if (this.mode === 'heat') for (let t = 0; t < n; ++t) highest = Math.max(highest, this.heat[t]);
+    const palette = new Map();
     for (let t = 0; t < n; ++t) {
-      let c;
+      let c, scale = 1, lift = 0;
       if (this.mode === 'heat') c = heatColor(highest > 0 ? this.heat[t] / highest : 0);
       else if (this.mode === 'draft' && this.draft) c = draftClasses[this.draft[t]].color;
       else {
-        c = partColor(this.labels[t]);
-        if (sides && !this.sides[t]) c = c.map((x) => x * 0.55);
-        if (this.highlightedPart !== undefined && this.labels[t] === this.highlightedPart) c = c.map((x) => 0.5 + 0.5 * x);
+        const label = this.labels[t];
+        c = palette.get(label);
+        if (!c) palette.set(label, (c = partColor(label)));
+        if (sides && !this.sides[t]) scale = 0.55;
+        if (this.highlightedPart !== undefined && label === this.highlightedPart) { scale *= 0.5; lift = 0.5; }
       }
-      colors.set(c, 3 * t);
+      colors[3 * t] = lift + scale * c[0];
+      colors[3 * t + 1] = lift + scale * c[1];
+      colors[3 * t + 2] = lift + scale * c[2];
     }
     if (highlight) for (const t of highlight) colors.set([0.95, 0.25, 0.75], 3 * t);
     this.viewer.setColors(colors);

@@ -1,5 +1,8 @@
 // viewer.js — the 3-D view: S_low as a flat-shaded mesh with one colour per
-// triangle (non-indexed, so triangle t owns vertices 3t..3t+2), the parting
+// triangle (non-indexed, so triangle t owns vertices 3t..3t+2; the shading is
+// baked into the colours, from a light beside the camera, re-baked when an
+// orbit ends: the cheapest fragment work, which matters with WebGL on the
+// CPU, and 1 byte per channel to upload after an edit), the parting
 // lines and part boundaries as line overlays, the brush cursor and stroke
 // highlight, click markers of a cut, and the mold pieces. Picking and brush
 // queries go through a three-mesh-bvh tree (refitted when S_low moves).
@@ -24,6 +27,7 @@ export class Viewer {
     this.camera = new THREE.PerspectiveCamera(40, 1, 0.1, 1e5);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.render());
+    this.controls.addEventListener('end', () => { if (this.model) { this.bakeShading(); this.render(); } });
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 1.6));
     const sun = new THREE.DirectionalLight(0xffffff, 1.4);
     sun.position.set(1, 2, 3);
@@ -31,6 +35,8 @@ export class Viewer {
     this.scene.add(this.camera);
     this.model = null;
     this.lines = new THREE.Group();
+    this.boundaryMaterial = new THREE.LineBasicMaterial({ color: 0x111111 });
+    this.partingMaterial = new THREE.LineBasicMaterial({ color: 0xffffff });
     this.scene.add(this.lines);
     this.overlay = new THREE.Group();
     this.scene.add(this.overlay);
@@ -79,14 +85,14 @@ export class Viewer {
     if (first) {
       const geometry = new THREE.BufferGeometry();
       geometry.setAttribute('position', new THREE.BufferAttribute(flat, 3));
-      geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(9 * nt).fill(0.8), 3));
-      geometry.computeVertexNormals();
+      geometry.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(9 * nt), 3, true));
       geometry.computeBoundsTree();
-      this.model = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({
-        vertexColors: true, flatShading: true, roughness: 0.75, metalness: 0.0,
-        polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+      this.model = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({
+        vertexColors: true, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
       this.scene.add(this.model);
       this.triangleCount = nt;
+      this.baseColors = new Float32Array(3 * nt).fill(0.8);
+      this.shade = new Float32Array(nt);
       this.positions = positions.slice();
       this.triangles = triangles.slice();
       this.frame();
@@ -94,11 +100,41 @@ export class Viewer {
       const attribute = this.model.geometry.getAttribute('position');
       attribute.array.set(flat);
       attribute.needsUpdate = true;
-      this.model.geometry.computeVertexNormals();
       this.model.geometry.boundsTree.refit();
       this.positions = positions.slice();
     }
+    this.bakeShading();
     this.render();
+  }
+
+  // Per-triangle brightness: a light from above the camera's side (flat
+  // shading), a sky term from +z, and an ambient floor; then the colours.
+  bakeShading() {
+    const p = this.model.geometry.getAttribute('position').array;
+    const eye = this.camera.position.clone().sub(this.controls.target).normalize();
+    const light = eye.add(this.camera.up.clone().multiplyScalar(0.6)).normalize();
+    for (let t = 0; t < this.triangleCount; ++t) {
+      const o = 9 * t;
+      const ax = p[o + 3] - p[o], ay = p[o + 4] - p[o + 1], az = p[o + 5] - p[o + 2];
+      const bx = p[o + 6] - p[o], by = p[o + 7] - p[o + 1], bz = p[o + 8] - p[o + 2];
+      const nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+      const length = Math.hypot(nx, ny, nz) || 1;
+      const facing = (nx * light.x + ny * light.y + nz * light.z) / length;
+      const sky = 0.5 + 0.5 * nz / length;
+      this.shade[t] = 0.3 + 0.12 * sky + 0.63 * Math.max(0, facing);
+    }
+    this.applyColors();
+  }
+
+  applyColors() {
+    const attribute = this.model.geometry.getAttribute('color');
+    const array = attribute.array, base = this.baseColors, shade = this.shade;
+    for (let t = 0; t < this.triangleCount; ++t) {
+      const s = 255 * shade[t];
+      const r = Math.min(255, s * base[3 * t]), g = Math.min(255, s * base[3 * t + 1]), b = Math.min(255, s * base[3 * t + 2]);
+      for (let k = 9 * t; k < 9 * t + 9; k += 3) { array[k] = r; array[k + 1] = g; array[k + 2] = b; }
+    }
+    attribute.needsUpdate = true;
   }
 
   frame() {
@@ -114,28 +150,30 @@ export class Viewer {
     this.controls.update();
   }
 
-  // colors: Float32Array of 3 per triangle.
+  // colors: Float32Array of 3 per triangle (kept; shaded when drawn).
   setColors(colors) {
-    const attribute = this.model.geometry.getAttribute('color');
-    const array = attribute.array;
-    for (let t = 0; t < this.triangleCount; ++t)
-      for (let k = 0; k < 3; ++k) array.set(colors.subarray(3 * t, 3 * t + 3), 9 * t + 3 * k);
-    attribute.needsUpdate = true;
+    this.baseColors.set(colors);
+    this.applyColors();
   }
 
   // lines: [{part, points: [x,y,z,...]}]; style: {color, width}.
   setLines(parting, boundaries, visible) {
+    for (const line of this.lines.children) line.geometry.dispose();
     this.lines.clear();
-    const add = (list, color) => {
-      const segments = [];
+    const add = (list, material) => {
+      let count = 0;
+      for (const line of list) count += Math.max(0, line.points.length / 3 - 1);
+      const segments = new Float32Array(6 * count);
+      let at = 0;
       for (const line of list)
-        for (let i = 0; i + 5 < line.points.length; i += 3) segments.push(...line.points.slice(i, i + 6));
+        for (let i = 0; i + 5 < line.points.length; i += 3, at += 6)
+          for (let k = 0; k < 6; ++k) segments[at + k] = line.points[i + k];
       const geometry = new THREE.BufferGeometry();
-      geometry.setAttribute('position', new THREE.Float32BufferAttribute(segments, 3));
-      this.lines.add(new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color })));
+      geometry.setAttribute('position', new THREE.BufferAttribute(segments, 3));
+      this.lines.add(new THREE.LineSegments(geometry, material));
     };
-    add(boundaries, 0x111111);
-    add(parting, 0xffffff);
+    add(boundaries, this.boundaryMaterial);
+    add(parting, this.partingMaterial);
     this.lines.visible = visible;
   }
 
