@@ -33,7 +33,7 @@ Decomposition coarse_decomposition(const Shell& shell, const MoldabilityTerms& t
     // whatever was asked.
     const int pieces = int(connected_pieces(elements).size());
     const int per_piece = shell.solid ? 1 : 2;
-    const int first = std::max(options.parts > 0 ? options.parts : per_piece, pieces > 1 ? per_piece * pieces : 1);
+    const int first = std::max(options.parts, per_piece * pieces);
     const int last = std::max(options.parts > 0 ? options.parts : options.max_parts, first);
     Decomposition best;
     double best_energy = 1e300;

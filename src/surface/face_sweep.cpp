@@ -37,12 +37,13 @@ Mesh sweep_faces_to_plane(const Mesh& part, bool upward, double plane_z) {
         if ((normal_z < 0) != upward) continue;
         faces.push_back(t);
         for (int k = 0; k < 3; ++k) edges[{t[k], t[(k + 1) % 3]}] = true;
-        for (int k = 0; k < 3; ++k) {
-            const double z = part.vertices[t[k]][2];
+    }
+    for (const Triangle& t : part.triangles)
+        for (uint32_t v : t) {
+            const double z = part.vertices[v][2];
             if (upward ? z >= plane_z : z <= plane_z)
                 throw Error(FABVDB_ERR_BAD_INPUT, "the sweep plane does not clear the part");
         }
-    }
     if (faces.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the part has no face to sweep");
     for (const Triangle& t : faces) {
         swept.triangles.push_back({base_vertex(t[0]), base_vertex(t[1]), base_vertex(t[2])});
