@@ -12,6 +12,8 @@
 #include <queue>
 #include <set>
 
+#include <tbb/parallel_for.h>
+
 #include "core/error.h"
 #include "surface/boundary_smoothing.h"
 #include "surface/vec3_ops.h"
@@ -151,10 +153,10 @@ std::vector<int> apply_no_cut(const Shell& shell, const MoldabilityTerms& terms,
                                          options.max_iterations, progress);
     for (size_t t = 0; t < shell.triangle_count(); ++t)
         if (domain[t]) decomposition.part_of_triangle[t] = region_part[regions.region_of_triangle[t]];
-    for (size_t r = 0; r < region_part.size(); ++r)
-        decomposition.parts[region_part[r]] =
-            parting_line(shell, terms, decomposition.part_of_triangle, region_part[r], regions.direction[r],
-                         options.weights);
+    tbb::parallel_for(size_t(0), region_part.size(), [&](size_t r) {
+        decomposition.parts[region_part[r]] = parting_line(shell, terms, decomposition.part_of_triangle,
+                                                           region_part[r], regions.direction[r], options.weights);
+    });
     return parts;
 }
 

@@ -9,6 +9,8 @@
 #include <random>
 #include <tuple>
 
+#include <tbb/parallel_for.h>
+
 #include "surface/vec3_ops.h"
 
 namespace fabvdb::surface {
@@ -77,7 +79,6 @@ struct Grower {
         const size_t direction_count = terms.directions.directions.size();
         std::vector<Vec3> normal_sum(region_count, Vec3{0, 0, 0});
         std::vector<std::vector<uint32_t>> thin_triangles(region_count);
-        std::vector<std::vector<double>> overlapping(region_count, std::vector<double>(axis_count, 0.0));
         for (size_t t = 0; t < shell.triangle_count(); ++t) {
             const int r = region_of_triangle[t];
             if (r < 0) continue;
@@ -85,21 +86,28 @@ struct Grower {
                 thin_triangles[r].push_back(uint32_t(t));
             else
                 normal_sum[r] = normal_sum[r] + shell.normal[t];
-            for (size_t a = 0; a < axis_count; ++a) {
-                const auto& o = terms.overlaps[a];
+        }
+        // Per axis (in parallel): the overlap cost of each region's triangles
+        // that overlap their own region along it.
+        std::vector<std::vector<double>> overlapping(axis_count, std::vector<double>(region_count, 0.0));
+        tbb::parallel_for(size_t(0), axis_count, [&](size_t a) {
+            const auto& o = terms.overlaps[a];
+            for (size_t t = 0; t < shell.triangle_count(); ++t) {
+                const int r = region_of_triangle[t];
+                if (r < 0) continue;
                 for (uint32_t i = o.offset[t]; i < o.offset[t + 1]; ++i)
                     if (region_of_triangle[o.partner[i]] == r) {
-                        overlapping[r][a] += overlap_weight;
+                        overlapping[a][r] += overlap_weight;
                         break;
                     }
             }
-        }
+        });
         std::vector<int> best(region_count, 0);
         for (int r = 0; r < region_count; ++r) {
             double best_cost = 1e300;
             for (size_t d = 0; d < direction_count; ++d) {
                 const Vec3& dir = terms.directions.directions[d];
-                double cost = -dot(normal_sum[r], dir) + overlapping[r][terms.axis_of_direction[d]];
+                double cost = -dot(normal_sum[r], dir) + overlapping[terms.axis_of_direction[d]][r];
                 for (uint32_t t : thin_triangles[r]) cost -= std::abs(dot(shell.normal[t], dir));
                 if (cost < best_cost) {
                     best_cost = cost;
