@@ -8,7 +8,6 @@
 #include <string>
 
 #include <openvdb/io/File.h>
-#include <openvdb/tools/LevelSetMeasure.h>
 
 #include "api/guard.h"
 #include "api/options.h"
@@ -18,6 +17,7 @@
 #include "surface/inspect.h"
 #include "surface/mesh_repair.h"
 #include "volume/extract_mesh.h"
+#include "volume/level_set_volume.h"
 #include "volume/mesh_shells.h"
 #include "volume/repair.h"
 
@@ -97,7 +97,7 @@ fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, 
         fabvdb::Progress progress = ctx->make_progress();
         fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
         nlohmann::json document = repair_report(result, clock.total());
-        document["volume"] = openvdb::tools::levelSetVolume(*result.grid);
+        document["volume"] = fabvdb::volume::level_set_volume(*result.grid);
         auto volume = std::make_unique<fabvdb_volume>();
         volume->grid = result.grid;
         if (report) *report = fabvdb::api::new_report_handle(std::move(document));

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <string>
 
-#include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 #include <openvdb/tools/MeshToVolume.h>
 
 #include "core/error.h"
+#include "volume/level_set_volume.h"
 #include "volume/progress_interrupter.h"
 
 namespace fabvdb::volume {
@@ -77,7 +77,7 @@ std::vector<openvdb::FloatGrid::Ptr> restore_part_details(const openvdb::FloatGr
         // A part about a voxel thin keeps almost no inside voxel: what would
         // be restored of it is crumbs.
         const double held =
-            grid->activeVoxelCount() == 0 ? 0.0 : openvdb::tools::levelSetVolume(*grid) / signed_volume(parts[i]);
+            level_set_volume(*grid) / signed_volume(parts[i]);
         if (!(held >= 0.5))
             throw Error(FABVDB_ERR_BAD_INPUT,
                         options.input_name + ": part " + std::to_string(i) + " is about a voxel (" +

@@ -11,11 +11,11 @@
 #include <openvdb/tools/Dense.h>
 #include <openvdb/tools/GridTransformer.h>
 #include <openvdb/tools/Interpolation.h>
-#include <openvdb/tools/LevelSetMeasure.h>
 
 #include "core/error.h"
 #include "volume/column_runs.h"
 #include "volume/dense_level_set.h"
+#include "volume/level_set_volume.h"
 #include "volume/progress_interrupter.h"
 
 namespace fabvdb::volume {
@@ -52,12 +52,6 @@ openvdb::FloatGrid::Ptr unkept_runs(const openvdb::FloatGrid& swept, const openv
     return dense_level_set(block, swept.transform(), swept.background(), progress);
 }
 
-//! mm³ inside a level set (0 for a grid without active voxels, which
-//! OpenVDB's measure refuses).
-double inside_volume(const openvdb::FloatGrid& grid) {
-    return grid.activeVoxelCount() == 0 ? 0.0 : openvdb::tools::levelSetVolume(grid);
-}
-
 }  // namespace
 
 HandOver hand_over_unkept_runs(const std::vector<openvdb::FloatGrid::Ptr>& own,
@@ -83,7 +77,7 @@ HandOver hand_over_unkept_runs(const std::vector<openvdb::FloatGrid::Ptr>& own,
         progress.check();
         openvdb::FloatGrid::Ptr mine = own[p]->deepCopy();
         openvdb::tools::csgIntersection(*unkept, *mine);
-        const double volume = inside_volume(*unkept);
+        const double volume = level_set_volume(*unkept);
         progress.update((double(p) + 0.5) / double(count));
         if (!(volume > 0)) continue;
 
@@ -110,7 +104,7 @@ HandOver hand_over_unkept_runs(const std::vector<openvdb::FloatGrid::Ptr>& own,
         progress.check();
         for (size_t q = 0; q < count; ++q) {
             if (q == p) continue;
-            const double share_volume = inside_volume(*share[q]);
+            const double share_volume = level_set_volume(*share[q]);
             if (!(share_volume > 0)) continue;
             result.received[q] += share_volume;
             openvdb::tools::csgUnion(*result.parts[q], *share[q]);

@@ -1,5 +1,6 @@
 //! The check every operation on a given level set starts with: the grid is a
-//! level set (grid class) with uniform voxels, or an INVALID_ARGUMENT Error
+//! level set (grid class) with uniform voxels (edges equal to 1e-6 of their
+//! length, in any rotated frame and at any scale), or an INVALID_ARGUMENT Error
 //! names what it was ("the part", "a keep-out solid").
 #pragma once
 

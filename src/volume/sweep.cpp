@@ -12,11 +12,11 @@
 #include <openvdb/tools/Dense.h>
 #include <openvdb/tools/GridTransformer.h>
 #include <openvdb/tools/Interpolation.h>
-#include <openvdb/tools/LevelSetMeasure.h>
 
 #include "core/error.h"
 #include "volume/aligned_frame.h"
 #include "volume/dense_level_set.h"
+#include "volume/level_set_volume.h"
 #include "volume/progress_interrupter.h"
 #include "volume/require_level_set.h"
 #include "volume/trim_deep_fills.h"
@@ -91,7 +91,7 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
     progress.stage("sweep: resample to the parting direction");
     openvdb::FloatGrid::Ptr aligned = resampled(part, transform, background, interrupter, progress);
     SweepStats figures;
-    figures.volume_before = openvdb::tools::levelSetVolume(*aligned);
+    figures.volume_before = level_set_volume(*aligned);
     if (aligned->activeVoxelCount() == 0) throw Error(FABVDB_ERR_BAD_INPUT, "the part to sweep is empty");
 
     // The other parts on the aligned grid: the sweep's added material keeps
@@ -130,14 +130,14 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
         }
         swept = dense_level_set(dense, *transform, background, progress);
     }
-    figures.volume_swept = openvdb::tools::levelSetVolume(*swept);
+    figures.volume_swept = level_set_volume(*swept);
 
     if (others) {
         progress.stage("sweep: keep out of other parts");
         openvdb::tools::csgDifference(*swept, *others);
         progress.check();
     }
-    figures.volume_after = openvdb::tools::levelSetVolume(*swept);
+    figures.volume_after = level_set_volume(*swept);
     figures.added_volume = figures.volume_after - figures.volume_before;
     figures.removed_by_keep_out = figures.volume_swept - figures.volume_after;
     if (stats) *stats = figures;
