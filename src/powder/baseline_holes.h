@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "powder/drainability_model.h"
+#include "powder/drain_hole.h"
 
 namespace fabvdb::powder {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/mesh.h"
-#include "powder/drainability_model.h"
+#include "powder/drain_hole.h"
 
 namespace fabvdb::powder {
 

@@ -13,7 +13,7 @@
 
 #include "core/progress.h"
 #include "powder/cavity_patches.h"
-#include "powder/drainability_model.h"
+#include "powder/drain_hole.h"
 #include "powder/keep_out.h"
 
 namespace fabvdb::powder {
