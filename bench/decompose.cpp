@@ -23,7 +23,7 @@
 #include "core/error.h"
 #include "io/mesh_io.h"
 #include "surface/decompose.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 using namespace fabvdb;
 using namespace fabvdb::surface;

@@ -24,7 +24,7 @@
 #include "io/mesh_io.h"
 #include "surface/decomposition_io.h"
 #include "surface/decomposition_session.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 using namespace fabvdb;
 using namespace fabvdb::surface;

@@ -5,7 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::powder {
 
@@ -36,7 +36,7 @@ Routine best_cleaning_routine(const TurnSamples& samples, const HoleSetDrain& dr
         uint32_t best = 0;
         double best_tilt = -2.0;
         for (size_t k = 0; k < left.size(); ++k) {
-            const double cosine = surface::dot(gravity[k], previous);  // larger: a smaller tilt
+            const double cosine = dot(gravity[k], previous);  // larger: a smaller tilt
             if (left[k] <= least + tie && cosine > best_tilt) {
                 best_tilt = cosine;
                 best = uint32_t(k);

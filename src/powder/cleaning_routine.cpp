@@ -5,15 +5,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/vec3_ops.h"
+
 namespace fabvdb::powder {
 
 namespace {
-
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 //! A hole points down when its axis lies within this angle of gravity.
 const double kDownCosine = std::cos(60.0 * M_PI / 180.0);

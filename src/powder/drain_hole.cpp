@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::powder {
 
@@ -11,7 +11,7 @@ bool spaced_from(const DrainHole& candidate, const std::vector<DrainHole>& holes
     for (const DrainHole& hole : holes) {
         const Vec3 v{candidate.center[0] - hole.center[0], candidate.center[1] - hole.center[1],
                      candidate.center[2] - hole.center[2]};
-        if (std::sqrt(surface::dot(v, v)) < min_center_distance) return false;
+        if (std::sqrt(dot(v, v)) < min_center_distance) return false;
     }
     return true;
 }

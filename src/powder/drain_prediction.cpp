@@ -7,7 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "powder/sample_bits.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::powder {
 
@@ -52,7 +52,7 @@ CavityPowder cavity_powder(const TurnSamples& samples, const HoleSetDrain& drain
             if (drained.reaches[h]->cavity == c && !drained.reaches[h]->later[k].empty()) later.open[k].push_back(h);
         const Vec3& gravity = samples.later_gravity[k];
         std::sort(later.open[k].begin(), later.open[k].end(), [&](size_t x, size_t y) {
-            return surface::dot(drained.holes[x].center, gravity) > surface::dot(drained.holes[y].center, gravity);
+            return dot(drained.holes[x].center, gravity) > dot(drained.holes[y].center, gravity);
         });
     }
     later.cavity = c;

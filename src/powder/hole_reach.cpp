@@ -13,7 +13,7 @@
 
 #include "powder/hole_tunnel.h"
 #include "powder/sample_bits.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::powder {
 
@@ -92,7 +92,7 @@ void walk_above_surface(const TurnSamples& samples, const DrainHole& hole, uint3
         climb[d] = float(tan_repose * rise_and_across(v, {0, 0, 0}, gravity).second);
     }
     const double across = rise_and_across(powder.position[grid.sample[source]], crater.apex, gravity).second;
-    const double apex = -surface::dot(crater.apex, gravity);
+    const double apex = -dot(crater.apex, gravity);
     surface[source] = float(across <= crater.mouth ? apex - crater.mouth : apex + tan_repose * (across - crater.mouth));
     using Entry = std::pair<float, uint32_t>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;

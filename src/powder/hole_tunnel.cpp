@@ -5,7 +5,6 @@ namespace fabvdb::powder {
 
 namespace {
 
-using surface::dot;
 
 //! Unit direction down the plane of the hole's mouth (gravity less its part
 //! along the axis); zero when the axis is vertical.

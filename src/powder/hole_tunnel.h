@@ -17,15 +17,15 @@
 
 #include "core/mesh.h"
 #include "powder/drain_hole.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::powder {
 
 //! Height of `point` along −gravity above `from`, and its horizontal distance from it.
 inline std::pair<double, double> rise_and_across(const Vec3& point, const Vec3& from, const Vec3& gravity) {
     const Vec3 v{point[0] - from[0], point[1] - from[1], point[2] - from[2]};
-    const double rise = -surface::dot(v, gravity);
-    return {rise, std::sqrt(std::max(0.0, surface::dot(v, v) - rise * rise))};
+    const double rise = -dot(v, gravity);
+    return {rise, std::sqrt(std::max(0.0, dot(v, v) - rise * rise))};
 }
 
 //! Whether powder can leave through the hole's tunnel for `gravity` (unit).
@@ -46,8 +46,8 @@ CraterCone crater_cone(const DrainHole& hole, const Vec3& gravity, double repose
 // Inline: the walks up the sample chains call it for every sample.
 inline bool CraterCone::below(const Vec3& point) const {
     const Vec3 v{point[0] - apex[0], point[1] - apex[1], point[2] - apex[2]};
-    const double rise = -surface::dot(v, gravity);
-    const double across_squared = std::max(0.0, surface::dot(v, v) - rise * rise);
+    const double rise = -dot(v, gravity);
+    const double across_squared = std::max(0.0, dot(v, v) - rise * rise);
     if (across_squared <= mouth * mouth) return rise < -mouth;
     if (rise < 0.0) return true;
     const double reach = rise / tan_repose + mouth;  // the cone's radius at this height

@@ -7,7 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::powder {
 
@@ -41,7 +41,7 @@ std::vector<std::array<uint32_t, 26>> sample_links(const SampleGrid& grid) {
 //! Each sample's height along −gravity (what the sublevel forests order by).
 std::vector<float> heights(const SampleGrid& grid, const PowderSamples& powder, const Vec3& gravity) {
     std::vector<float> height(grid.size());
-    for (size_t a = 0; a < grid.size(); ++a) height[a] = float(-surface::dot(powder.position[grid.sample[a]], gravity));
+    for (size_t a = 0; a < grid.size(); ++a) height[a] = float(-dot(powder.position[grid.sample[a]], gravity));
     return height;
 }
 

@@ -12,7 +12,7 @@
 #include <openvdb/math/Proximity.h>
 #include <tbb/parallel_for.h>
 
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 

@@ -16,7 +16,7 @@
 
 #include "core/error.h"
 #include "surface/boundary_smoothing.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 

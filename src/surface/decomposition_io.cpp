@@ -16,7 +16,7 @@
 #include "core/atomic_folder.h"
 #include "core/error.h"
 #include "surface/moldability_energy.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 

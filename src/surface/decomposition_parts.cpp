@@ -11,7 +11,7 @@
 
 #include "core/error.h"
 #include "surface/surface_distance.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 

@@ -11,7 +11,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <tbb/parallel_for.h>
 
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 

@@ -21,7 +21,7 @@
 #include <openvdb/tools/Prune.h>
 
 #include "core/error.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 #include "volume/extract_mesh.h"
 #include "volume/progress_interrupter.h"
 #include "volume/require_level_set.h"

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 

@@ -5,20 +5,15 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::volume {
 
 namespace {
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 //! v over its length; scaled by its largest coordinate first, so lengths
 //! whose square under- or overflows a double are fine.
-Vec3 normalized(const Vec3& v) {
+Vec3 normalized_without_overflow(const Vec3& v) {
     const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
     const Vec3 scaled{v[0] / largest, v[1] / largest, v[2] / largest};
     const double length = std::sqrt(dot(scaled, scaled));
@@ -41,13 +36,13 @@ AlignedFrame aligned_frame(const Vec3& direction) {
         largest == 0.0)
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the parting direction must be a finite non-zero vector");
     AlignedFrame frame;
-    frame.d = normalized(direction);
+    frame.d = normalized_without_overflow(direction);
     int least = 0;
     for (int k = 1; k < 3; ++k)
         if (std::abs(frame.d[k]) < std::abs(frame.d[least])) least = k;
     Vec3 axis{0, 0, 0};
     axis[least] = 1.0;
-    frame.e1 = normalized(cross(axis, frame.d));
+    frame.e1 = normalized_without_overflow(cross(axis, frame.d));
     frame.e2 = cross(frame.d, frame.e1);
     return frame;
 }

@@ -11,7 +11,7 @@
 
 #include "support/shapes.h"
 #include "surface/draft_map.h"
-#include "surface/vec3_ops.h"
+#include "core/vec3_ops.h"
 
 namespace {
 

@@ -1,13 +1,15 @@
-//! Small inline vector arithmetic on core Vec3 (std::array<double, 3>) for the
-//! surface algorithms: sums, differences, scaling, dot and cross products,
-//! lengths. Header-only, no state.
+//! Small inline vector arithmetic on Vec3 (std::array<double, 3>), shared by
+//! every module: sums, differences, scaling, dot and cross products, lengths.
+//! Each is the plain expression, component by component, in the order
+//! written, so a caller's numerics are those of writing it out. Header-only,
+//! no state.
 #pragma once
 
 #include <cmath>
 
 #include "core/mesh.h"
 
-namespace fabvdb::surface {
+namespace fabvdb {
 
 inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -22,4 +24,4 @@ inline Vec3 normalized(const Vec3& a) {
     return n > 0 ? (1.0 / n) * a : Vec3{0, 0, 0};
 }
 
-}  // namespace fabvdb::surface
+}  // namespace fabvdb
