@@ -6,8 +6,9 @@
 //! of it; all three shared, a duplicate. Only pairs with a candidate in them
 //! are tested, among the triangles whose boxes meet a candidate's, so a few
 //! candidates cost little on a large mesh. Broad phase on uniform grids, one
-//! per size class of triangle, so it stays near linear for adaptive meshes
-//! too; parallel (TBB).
+//! per size class of triangle (triangle_box_pairs.h), so it stays near linear
+//! for adaptive meshes too; pairs at an embedded fan skipped
+//! (embedded_fans.h); the exact test in triangles_cross.h. Parallel (TBB).
 #pragma once
 
 #include <cstdint>
