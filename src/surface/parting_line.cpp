@@ -35,7 +35,11 @@ public:
         // Out-edges in vertex order: each surface triangle's to the source,
         // to the sink and to its neighbours; then the source's and the
         // sink's to every triangle. An edge's index is its position.
+        first_out_.resize(n_);
+        size_t m = 2 * n_;
+        for (size_t i = 0; i < n_; m += 2 + s.adjacent(i).size(), ++i) first_out_[i] = m - 2 * n_;
         std::vector<std::pair<size_t, size_t>> edges;
+        edges.reserve(m);
         for (size_t i = 0; i < n_; ++i) {
             edges.emplace_back(i, n_);
             edges.emplace_back(i, n_ + 1);
@@ -44,15 +48,13 @@ public:
         for (size_t terminal = n_; terminal < n_ + 2; ++terminal)
             for (size_t i = 0; i < n_; ++i) edges.emplace_back(terminal, i);
         graph_ = Graph(boost::edges_are_sorted, edges.begin(), edges.end(), n_ + 2);
-        const size_t m = edges.size();
         capacity_.assign(m, 0.0);
         residual_.assign(m, 0.0);
-        reverse_.resize(m);
-        std::vector<GraphEdge> edge_at(m);
-        for (size_t v = 0; v < n_ + 2; ++v)
-            for (auto [e, end] = boost::out_edges(v, graph_); e != end; ++e) edge_at[(*e).idx] = *e;
-        first_out_.resize(n_);
-        for (size_t i = 0, at = 0; i < n_; at += 2 + s.adjacent(i).size(), ++i) first_out_[i] = at;
+        std::vector<size_t> reverse(m);
+        const auto pair = [&](size_t a, size_t b) {
+            reverse[a] = b;
+            reverse[b] = a;
+        };
         const size_t from_source = m - 2 * n_, from_sink = m - n_;
         for (size_t i = 0; i < n_; ++i) {
             size_t at = first_out_[i];
@@ -72,7 +74,9 @@ public:
                 pair(at, back);
             }
         }
-        for (size_t e = 0; e < m; ++e) reverse_edge_.push_back(edge_at[reverse_[e]]);
+        // The reverse of edge e as a descriptor: (source of reverse[e], reverse[e]).
+        reverse_edge_.resize(m);
+        for (size_t e = 0; e < m; ++e) reverse_edge_[reverse[e]] = GraphEdge(edges[e].first, e);
     }
 
     //! Per surface triangle: in M⁺ for direction d.
@@ -110,16 +114,10 @@ private:
         return list.size();  // not reached: the adjacency is symmetric
     }
 
-    void pair(size_t a, size_t b) {
-        reverse_[a] = b;
-        reverse_[b] = a;
-    }
-
     const PartSurface& s_;
     const size_t n_;
     Graph graph_;
     std::vector<double> capacity_, residual_;
-    std::vector<size_t> reverse_;
     std::vector<GraphEdge> reverse_edge_;
     std::vector<size_t> first_out_;  //!< per triangle: its first out-edge (to the source; then the sink's)
 };
