@@ -75,13 +75,15 @@ export class Viewer {
   // S_low from the server: positions (3 per vertex), triangles (3 per triangle).
   setMesh(positions, triangles) {
     const nt = triangles.length / 3;
-    const flat = new Float32Array(9 * nt);
-    for (let t = 0; t < nt; ++t)
-      for (let k = 0; k < 3; ++k) {
-        const v = triangles[3 * t + k];
-        flat.set(positions.subarray(3 * v, 3 * v + 3), 9 * t + 3 * k);
-      }
     const first = !this.model;
+    const flat = first ? new Float32Array(9 * nt) : this.model.geometry.getAttribute('position').array;
+    for (let t = 0, at = 0; t < nt; ++t)
+      for (let k = 0; k < 3; ++k, at += 3) {
+        const v = 3 * triangles[3 * t + k];
+        flat[at] = positions[v];
+        flat[at + 1] = positions[v + 1];
+        flat[at + 2] = positions[v + 2];
+      }
     if (first) {
       const geometry = new THREE.BufferGeometry();
       geometry.setAttribute('position', new THREE.BufferAttribute(flat, 3));
@@ -97,14 +99,13 @@ export class Viewer {
       this.triangles = triangles.slice();
       this.frame();
     } else {
-      const attribute = this.model.geometry.getAttribute('position');
-      attribute.array.set(flat);
-      attribute.needsUpdate = true;
+      this.model.geometry.getAttribute('position').needsUpdate = true;
       this.model.geometry.boundsTree.refit();
       this.positions = positions.slice();
     }
     this.bakeShading();
-    this.render();
+    // A moved S_low comes with the labels and state of its edit, drawn then.
+    if (first) this.render();
   }
 
   // Per-triangle brightness: a light from above the camera's side (flat
