@@ -8,8 +8,10 @@
 // `fabvdb decompose --edits` gives the same labels, a bad message (oversized,
 // malformed edit, an edit that does not apply) is refused and leaves the
 // session as it was; Make molds shows its progress and Cancel stops it with an
-// error in the page and the session as it was; the draft map arrives for a
-// part's direction; a screenshot is written to WORK_DIR/browser/studio.png.
+// error in the page and the session as it was; Make molds run to the end
+// shows the pieces, and each cast part and mold piece passes the independent
+// checks (CHECKER --cast); the draft map arrives for a part's direction;
+// screenshots are written to WORK_DIR/browser/studio.png and studio-molds.png.
 // Usage: node studio_browser_test.mjs FABVDB SHARED_DATA CHECKER WORK_DIR
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -287,6 +289,29 @@ try {
   assert.match(cancelled.error, /^mold: .*cancel/i);
   assert.deepEqual(cancelled.labels, before.labels);
   step(`Make molds shows its progress (${stage}) and Cancel stops it: ${cancelled.error}`);
+
+  // 7b. Make molds to the end: the pieces are shown, and each cast part and
+  // its two mold pieces pass the independent checks along the part's direction.
+  await page.click('#mold');
+  await page.waitForFunction(() => studio.molded, null, { timeout: 600000 });
+  const made = await page.evaluate(() => ({ molded: studio.molded, pieces: studio.viewer.pieces.children.length,
+                                            shown: studio.viewer.pieces.visible,
+                                            directions: studio.state.parts.map((p) => p.direction) }));
+  assert.equal(made.molded.parts.length, made.directions.length);
+  assert.equal(made.pieces, 3 * made.directions.length);
+  assert.ok(made.shown);
+  for (const part of made.molded.parts) {
+    const id = String(part.id).padStart(2, '0');
+    const folder = made.molded.folder;
+    execFileSync(checker, ['--cast', `${folder}/parts/part_${id}.stl`, `${folder}/molds/part_${id}_top.stl`,
+                           `${folder}/molds/part_${id}_bottom.stl`, ...made.directions[part.id].map(String)],
+                 { stdio: 'inherit' });
+    assert.ok(part.weight > 0);
+  }
+  await page.screenshot({ path: `${dir}/studio-molds.png` });
+  await page.click('#molds-visible');
+  step(`Make molds to the end: ${made.pieces} pieces shown, each part and mold piece passes the independent checks; ` +
+       `screenshot ${dir}/studio-molds.png`);
 
   // 8. The draft map for a part's direction, and a screenshot.
   await page.check('input[value=draft]');
