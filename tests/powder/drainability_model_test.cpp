@@ -1,10 +1,6 @@
 //! drainability_model against hand-worked cases, on the model that
 //! plan_drain_holes builds for a hollow sphere (cavity radius 12.5 mm) with
 //! the operator turning it only to "as printed" (gravity −z):
-//! - absorbing(): a tunnel passes powder when its axis is within 90° − θ_r of
-//!   gravity (θ_r = 35°); a flatter one when the slope of repose from its
-//!   outer lip meets the inner mouth below its top: for a horizontal tunnel
-//!   of diameter D and length L, when D > L·tan θ_r; never when it points up.
 //! - As printed, a hole at the bottom leaves the powder under the crater's
 //!   cone rising at θ_r from the rim of its mouth: the share of the sphere
 //!   under that cone, integrated here on a fine grid, about 4.5%.
@@ -32,16 +28,6 @@ constexpr double kCavity = 12.5;
 template <class Check>
 void with_sphere_model(Check check) {
     fabvdb::test::with_drainability_model(fabvdb::test::hollow_sphere({0, 0, 0}, 15.0, 2.5, 0.5), 40000, check);
-}
-
-DrainHole tunnel(const Vec3& axis, double diameter, double through) {
-    DrainHole hole;
-    hole.center = {0, 0, 0};
-    hole.axis = axis;
-    hole.diameter = diameter;
-    hole.through = through;
-    hole.depth = through + diameter;
-    return hole;
 }
 
 //! The candidate whose centre is lowest (or highest) along z.
@@ -72,23 +58,6 @@ double share_under_cone(double r, const Vec3& apex, double mouth) {
 }
 
 }  // namespace
-
-TEST(DrainabilityModel, AbsorbingTunnelsByHand) {
-    with_sphere_model([](const DrainabilityModel& model, const std::vector<DrainHole>&) {
-        const DrainHole down = tunnel({0, 0, -1}, 4.0, 2.5);
-        EXPECT_TRUE(model.absorbing(down, {0, 0, -1}));
-        // 50° off the axis: within 90° − 35° = 55°, steep.
-        EXPECT_TRUE(model.absorbing(down, {std::sin(50 * M_PI / 180), 0, -std::cos(50 * M_PI / 180)}));
-        // Pointing up: powder would have to climb the tunnel.
-        EXPECT_FALSE(model.absorbing(down, {0, 0, 1}));
-        // Horizontal: passes when D > L·tan θ_r (4 > 2.5·0.70 = 1.75), not for L = 8 (5.6 > 4).
-        EXPECT_TRUE(model.absorbing(down, {1, 0, 0}));
-        EXPECT_FALSE(model.absorbing(tunnel({0, 0, -1}, 4.0, 8.0), {1, 0, 0}));
-        // 60° off the axis (30° below horizontal), L = 2.5: the outer lip lies
-        // below the inner mouth's top by 4.7 mm over 0.17 mm across: passes.
-        EXPECT_TRUE(model.absorbing(down, {std::sin(60 * M_PI / 180), 0, -std::cos(60 * M_PI / 180)}));
-    });
-}
 
 TEST(DrainabilityModel, BottomHoleKeepsTheCraterRimAsPrinted) {
     with_sphere_model([](const DrainabilityModel& model, const std::vector<DrainHole>& candidates) {

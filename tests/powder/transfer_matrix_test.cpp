@@ -13,6 +13,7 @@
 #include "powder/cavity_patches.h"
 #include "powder/surface_ray_caster.h"
 #include "powder/transfer_matrix.h"
+#include "support/hand_patches.h"
 #include "support/shapes.h"
 
 namespace {
@@ -20,11 +21,13 @@ namespace {
 using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::powder::CavityPatches;
-using fabvdb::powder::PatchNeighbour;
 using fabvdb::powder::StochasticMatrix;
 using fabvdb::powder::SurfaceRayCaster;
 using fabvdb::powder::transfer_matrix;
 using fabvdb::powder::TransferOptions;
+using fabvdb::test::kCeiling;
+using fabvdb::test::kFloor;
+using fabvdb::test::room_patches;
 using Row = std::map<uint32_t, double>;
 
 Row row(const StochasticMatrix& m, size_t i) {
@@ -40,42 +43,6 @@ void expect_row(const StochasticMatrix& m, size_t i, const Row& expected) {
         ASSERT_TRUE(actual.count(column)) << "row " << i << " lacks column " << column;
         EXPECT_NEAR(actual.at(column), weight, 1e-6) << "row " << i << " column " << column;
     }
-}
-
-struct Patch {
-    Vec3 centroid, normal;
-    double area;
-    std::vector<PatchNeighbour> neighbours;
-};
-
-//! Patches as given (site = centroid) over `mesh`, whose triangle t belongs to `of_triangle[t]`.
-CavityPatches patches_of(const std::vector<Patch>& list, std::vector<uint32_t> of_triangle) {
-    CavityPatches patches;
-    for (const Patch& p : list) {
-        patches.centroid.push_back(p.centroid);
-        patches.site.push_back(p.centroid);
-        patches.normal.push_back(p.normal);
-        patches.area.push_back(p.area);
-        patches.cavity.push_back(0);
-        patches.neighbours.push_back(p.neighbours);
-    }
-    patches.cavity_count = 1;
-    patches.patch_of_triangle = std::move(of_triangle);
-    return patches;
-}
-
-// The room x ∈ [-5, 5], y ∈ [-3, 3], z ∈ [0, 8]; make_box's faces in order
-// (two triangles each): floor, ceiling, y = -3, y = 3, x = -5, x = 5.
-enum Face : uint32_t { kFloor, kCeiling, kFront, kBack, kLeft, kRight };
-
-CavityPatches room_patches() {
-    return patches_of({{{0, 0, 0}, {0, 0, 1}, 60, {{kFront, 10}, {kBack, 10}, {kLeft, 6}, {kRight, 6}}},
-                       {{0, 0, 8}, {0, 0, -1}, 60, {{kFront, 10}, {kBack, 10}, {kLeft, 6}, {kRight, 6}}},
-                       {{0, -3, 4}, {0, 1, 0}, 80, {{kFloor, 10}, {kCeiling, 10}, {kLeft, 8}, {kRight, 8}}},
-                       {{0, 3, 4}, {0, -1, 0}, 80, {{kFloor, 10}, {kCeiling, 10}, {kLeft, 8}, {kRight, 8}}},
-                       {{-5, 0, 4}, {1, 0, 0}, 48, {{kFloor, 6}, {kCeiling, 6}, {kFront, 8}, {kBack, 8}}},
-                       {{5, 0, 4}, {-1, 0, 0}, 48, {{kFloor, 6}, {kCeiling, 6}, {kFront, 8}, {kBack, 8}}}},
-                      {0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5});
 }
 
 double degrees(double d) { return d * M_PI / 180.0; }
@@ -106,7 +73,7 @@ TEST(TransferMatrix, ASlopeSharesByBorderTimesDropOverRun) {
     const double s = std::sqrt(0.5);
     // Patch 0 at z 5 faces up at 45°; neighbours: 1 (run (3, 0, -4), border 2),
     // 2 (run (0, 4, -3), border 1), 3 higher, 4 level: neither gets powder.
-    const CavityPatches patches = patches_of({{{0, 0, 5}, {0, -s, s}, 1, {{1, 2}, {2, 1}, {3, 5}, {4, 3}}},
+    const CavityPatches patches = fabvdb::test::hand_patches({{{0, 0, 5}, {0, -s, s}, 1, {{1, 2}, {2, 1}, {3, 5}, {4, 3}}},
                                               {{3, 0, 1}, {0, 0, 1}, 1, {{0, 2}}},
                                               {{0, 4, 2}, {0, 0, 1}, 1, {{0, 1}}},
                                               {{0, 0, 7}, {0, 0, 1}, 1, {{0, 5}}},
@@ -123,7 +90,7 @@ TEST(TransferMatrix, FloorsAreWithinTheAngleOfRepose) {
     const SurfaceRayCaster caster(anything);
     auto tilted = [](double angle) { return Vec3{std::sin(degrees(angle)), 0, std::cos(degrees(angle))}; };
     // Three tilted patches, each above a lower floor (patch 3).
-    const CavityPatches patches = patches_of({{{0, 0, 5}, tilted(30), 1, {{3, 1}}},
+    const CavityPatches patches = fabvdb::test::hand_patches({{{0, 0, 5}, tilted(30), 1, {{3, 1}}},
                                               {{0, 1, 5}, tilted(40), 1, {{3, 1}}},
                                               {{0, 2, 5}, tilted(80), 1, {}},  // steep, but nowhere lower to go
                                               {{0, 0, 0}, {0, 0, 1}, 1, {{0, 1}, {1, 1}}}},
@@ -149,7 +116,7 @@ TEST(TransferMatrix, AnOverhangFallsWhereItsRaysLand) {
     mesh.triangles = {{0, 4, 1}, {0, 3, 4}, {1, 5, 2}, {1, 4, 5}, {6, 7, 9}, {6, 9, 8}};
     const SurfaceRayCaster caster(mesh);
     auto with_ceiling_site = [&](const Vec3& site, int cone_rays) {
-        CavityPatches patches = patches_of({{{-2.5, 0, 0}, {0, 0, 1}, 30, {{1, 6}}},
+        CavityPatches patches = fabvdb::test::hand_patches({{{-2.5, 0, 0}, {0, 0, 1}, 30, {{1, 6}}},
                                             {{2.5, 0, 0}, {0, 0, 1}, 30, {{0, 6}}},
                                             {{0, 0, 8}, {0, 0, -1}, 60, {}}},
                                            {0, 0, 1, 1, 2, 2});
@@ -172,7 +139,7 @@ TEST(TransferMatrix, AnOverhangFallsWhereItsRaysLand) {
     EXPECT_NEAR(split.at(0) + split.at(1), 1.0, 1e-6);
     // Upside down the ceiling is a floor and the floor's rays go up into it.
     const StochasticMatrix up = transfer_matrix(
-        patches_of({{{-2.5, 0, 0}, {0, 0, 1}, 30, {{1, 6}}}, {{2.5, 0, 0}, {0, 0, 1}, 30, {{0, 6}}},
+        fabvdb::test::hand_patches({{{-2.5, 0, 0}, {0, 0, 1}, 30, {{1, 6}}}, {{2.5, 0, 0}, {0, 0, 1}, 30, {{0, 6}}},
                     {{0, 0, 8}, {0, 0, -1}, 60, {}}},
                    {0, 0, 1, 1, 2, 2}),
         caster, {0, 0, 1}, TransferOptions{});
@@ -187,7 +154,7 @@ TEST(TransferMatrix, AnOverhangOverNothingKeepsItsPowder) {
     mesh.vertices = {{-5, -3, 8}, {5, -3, 8}, {-5, 3, 8}, {5, 3, 8}};
     mesh.triangles = {{0, 1, 3}, {0, 3, 2}};
     const SurfaceRayCaster caster(mesh);
-    const CavityPatches patches = patches_of({{{0, 0, 8}, {0, 0, -1}, 60, {}}}, {0, 0});
+    const CavityPatches patches = fabvdb::test::hand_patches({{{0, 0, 8}, {0, 0, -1}, 60, {}}}, {0, 0});
     expect_row(transfer_matrix(patches, caster, {0, 0, -1}, TransferOptions{}), 0, {{0, 1.0}});
 }
 
