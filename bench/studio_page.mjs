@@ -3,9 +3,12 @@
 // browser tests), each edit type sent as the page's tools send it and timed
 // in the page with performance.now from the send to the recoloured, rendered
 // parts, next to the server's time (message in to state out) and the
-// library's. Prints the medians per edit type.
-// Usage: node bench/studio_page.mjs BUILD_DIR [model ...]  (run from the source tree;
-// needs studio/node_modules from npm ci)
+// library's. Prints the medians per edit type. --pause MS waits MS before
+// each edit, as a person does between strokes: back to back, the previous
+// frame's drawing (WebGL on the same two cores here) still competes with
+// the next edit's work.
+// Usage: node bench/studio_page.mjs BUILD_DIR [--pause MS] [model ...]  (run from
+// the source tree; needs studio/node_modules from npm ci)
 import { createRequire } from 'node:module';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -13,13 +16,17 @@ import { startStudio } from '../studio/tests/server.mjs';
 
 const require = createRequire(new URL('../studio/package.json', import.meta.url));
 const { chromium } = require('playwright-core');
-const [build, ...only] = process.argv.slice(2);
+const [build, ...rest] = process.argv.slice(2);
+const pauseAt = rest.indexOf('--pause');
+const pause = pauseAt >= 0 ? Number(rest[pauseAt + 1]) : 0;
+const only = pauseAt >= 0 ? rest.filter((_, i) => i !== pauseAt && i !== pauseAt + 1) : rest;
 const shared = new URL('../../shared/data/meshes/', import.meta.url).pathname;
 const models = { bunny: 'bunny.off', kitten: 'kitten.obj', fertility: 'fertility.off', airplane: 'airplane.obj' };
 const repeat = 5;
 const median = (v) => { const s = [...v].sort((a, b) => a - b); return s.length ? s[Math.floor((s.length - 1) / 2)] : NaN; };
 
-console.log('end-to-end latency per edit (ms, median of up to 5): page (send -> recoloured) / server / library');
+console.log(`end-to-end latency per edit (ms, median of up to 5, ${pause} ms before each edit): ` +
+            'page (send -> recoloured) / server / library');
 const browser = await chromium.launch({ executablePath: '/usr/bin/chromium',
                                         args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox'] });
 try {
@@ -32,14 +39,14 @@ try {
       const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, bypassCSP: true });
       await page.goto(await studio.url);
       await page.waitForFunction(() => window.studio?.state && window.studio.viewer.model, null, { timeout: 900000 });
-      const result = await page.evaluate(async (repeat) => {
+      const result = await page.evaluate(async ([repeat, pause]) => {
         const s = window.studio;
         const wait = () => new Promise((resolve) => {
           const poll = () => (s.pending.size === 0 ? resolve() : setTimeout(poll, 1));
           poll();
         });
-        const run = async (op, args) => { s.send(op, args); await wait(); };
-        const edit = async (e) => { s.edit(e); await wait(); };
+        const run = async (op, args) => { await new Promise((r) => setTimeout(r, pause)); s.send(op, args); await wait(); };
+        const edit = async (e) => { await new Promise((r) => setTimeout(r, pause)); s.edit(e); await wait(); };
         const radius = s.viewer.size / 40;
         const boundary = [];
         for (const l of s.state.boundaries) for (let i = 0; i < l.points.length; i += 3 * Math.max(1, Math.floor(l.points.length / 9))) boundary.push(l.points.slice(i, i + 3));
@@ -92,7 +99,7 @@ try {
           await run('undo');
         }
         return { records, triangles: s.state.triangles, parts: s.state.parts.length, errors: s.errors };
-      }, repeat);
+      }, [repeat, pause]);
       const kinds = ['no_cut', 'cut', 'merge', 'smooth', 'undo', 'redo'];
       const cell = (k, f) => median(result.records.filter((x) => x.kind === k).map((x) => x[f]));
       console.log(`${name.padEnd(10)} S_low ${result.triangles}, ${result.parts} parts: ` +

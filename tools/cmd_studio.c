@@ -10,6 +10,9 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "commands.h"
 #include "studio_server.h"
@@ -69,7 +72,20 @@ static int output_usable(const char* output) {
     return stat(parent, &info) == 0 && S_ISDIR(info.st_mode);
 }
 
+/* Keeps freed memory in the process: every edit builds and frees megabytes
+ * of graph-cut networks and overlap lists, and glibc's defaults hand them
+ * back to the system, so each edit pays a page fault per 4 KiB touched
+ * again (a smoothing stroke on airplane: 250-420 ms with the defaults,
+ * 48-84 ms with allocations under 32 MiB kept in the heap). */
+static void keep_freed_memory(void) {
+#ifdef __GLIBC__
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 512 << 20);
+#endif
+}
+
 static int run_studio(cli_run* run) {
+    keep_freed_memory();
     fabvdb_decompose_options decompose;
     fabvdb_decompose_options_init(&decompose);
     decompose.gamma = cli_get(run, "--gamma")->number;
