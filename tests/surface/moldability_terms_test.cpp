@@ -2,10 +2,15 @@
 //! values worked out by hand, and the precomputed pairs of a shell against
 //! the geometry: on a convex sphere no two outer triangles facing the same
 //! side of an axis overlap in projection (it is a double height field), while
-//! two stacked spheres overlap by the lens where their projected discs meet.
+//! two stacked spheres overlap by the lens where their projected discs meet;
+//! and updating the terms of a few or of many moved triangles gives the pairs
+//! measured from scratch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "surface/moldability_terms.h"
 #include "surface/shell.h"
@@ -127,4 +132,79 @@ TEST(MoldabilityTerms, StackedSpheresOverlapByTheirDiscs) {
             ++checked;
         }
     EXPECT_GT(checked, 0u);
+}
+
+namespace {
+
+//! Per axis and triangle, the (partner, area) pairs sorted by partner.
+using PairLists = std::vector<std::vector<std::vector<std::pair<uint32_t, float>>>>;
+
+PairLists pair_lists(const MoldabilityTerms& terms) {
+    PairLists lists(terms.overlaps.size());
+    for (size_t a = 0; a < terms.overlaps.size(); ++a) {
+        const auto& o = terms.overlaps[a];
+        lists[a].resize(o.offset.size() - 1);
+        for (size_t t = 0; t + 1 < o.offset.size(); ++t) {
+            for (uint32_t k = o.offset[t]; k < o.offset[t + 1]; ++k) lists[a][t].emplace_back(o.partner[k], o.area[k]);
+            std::sort(lists[a][t].begin(), lists[a][t].end());
+        }
+    }
+    return lists;
+}
+
+//! Moves `count` vertices of the lower of the stacked spheres (every 7th off
+//! its bounding box, 7% of the way to its centre: the unit scale stays),
+//! updates the terms of the triangles around them and compares with the
+//! terms measured from scratch.
+void expect_update_equals_recompute(size_t count) {
+    fabvdb::Progress progress;
+    fabvdb::Mesh mesh =
+        fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 10.0, 3), fabvdb::test::make_sphere({0, 0, 30}, 10.0, 3));
+    const fabvdb::surface::Shell before = fabvdb::test::shell_of(mesh, 1.0);
+    MoldabilityTerms updated = fabvdb::surface::compute_moldability_terms(before, 0.0, progress);
+    std::vector<char> moved(mesh.vertices.size(), 0);
+    for (size_t i = 0, v = 0; i < count; v += 7) {
+        const Vec3& p = mesh.vertices[v];
+        if (std::abs(p[0]) > 9 || std::abs(p[1]) > 9 || std::abs(p[2]) > 9) continue;  // not on the bounding box
+        ++i;
+        moved[v] = 1;
+        mesh.vertices[v] = {0.93 * mesh.vertices[v][0], 0.93 * mesh.vertices[v][1], 0.93 * mesh.vertices[v][2]};
+    }
+    const fabvdb::surface::Shell after = fabvdb::test::shell_of(mesh, 1.0);
+    ASSERT_EQ(after.unit_scale, before.unit_scale);
+    std::vector<uint32_t> changed;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        if (moved[mesh.triangles[t][0]] || moved[mesh.triangles[t][1]] || moved[mesh.triangles[t][2]])
+            changed.push_back(uint32_t(t));
+    std::vector<int> axes(updated.axes.size());
+    for (size_t a = 0; a < axes.size(); ++a) axes[a] = int(a);
+    fabvdb::surface::update_moldability_terms(after, changed, axes, updated);
+    const MoldabilityTerms fresh = fabvdb::surface::compute_moldability_terms(after, 0.0, progress);
+    EXPECT_EQ(updated.pair_count, fresh.pair_count);
+    // The same partners; the same areas but for the rounding of clipping a
+    // pair in the other order (a changed triangle is clipped against the
+    // other one, not by increasing index).
+    const PairLists got = pair_lists(updated), expected = pair_lists(fresh);
+    ASSERT_EQ(got.size(), expected.size());
+    size_t compared = 0;
+    for (size_t a = 0; a < got.size(); ++a)
+        for (size_t t = 0; t < got[a].size(); ++t) {
+            ASSERT_EQ(got[a][t].size(), expected[a][t].size()) << "axis " << a << " triangle " << t;
+            for (size_t k = 0; k < got[a][t].size(); ++k) {
+                EXPECT_EQ(got[a][t][k].first, expected[a][t][k].first) << "axis " << a << " triangle " << t;
+                EXPECT_NEAR(got[a][t][k].second, expected[a][t][k].second, 1e-5 * expected[a][t][k].second + 1e-15);
+                ++compared;
+            }
+        }
+    EXPECT_GT(compared, 1000u);
+}
+
+}  // namespace
+
+TEST(MoldabilityTerms, UpdatingAFewMovedTrianglesEqualsMeasuringAgain) {
+    expect_update_equals_recompute(2);  // about 12 triangles: each box against the changed ones
+}
+
+TEST(MoldabilityTerms, UpdatingManyMovedTrianglesEqualsMeasuringAgain) {
+    expect_update_equals_recompute(40);  // about 240 triangles: through the grid
 }
