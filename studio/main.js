@@ -141,6 +141,8 @@ class Studio {
     this.viewer.pieces.visible = on;
     this.viewer.model.visible = !on;
     this.viewer.lines.visible = !on && $('lines').checked;
+    this.viewer.frame(on ? this.viewer.pieces : this.viewer.model);
+    this.viewer.bakeShading();
     this.viewer.render();
   }
 

@@ -138,15 +138,18 @@ export class Viewer {
     attribute.needsUpdate = true;
   }
 
-  frame() {
-    const box = new THREE.Box3().setFromObject(this.model);
+  // Points the camera at `object` (S_low, or the mold pieces) from the front
+  // right, z up; the model's size (brush radii) is S_low's.
+  frame(object = this.model) {
+    const box = new THREE.Box3().setFromObject(object);
     const center = box.getCenter(new THREE.Vector3());
-    this.size = box.getSize(new THREE.Vector3()).length();
+    const size = box.getSize(new THREE.Vector3()).length();
+    if (object === this.model) this.size = size;
     this.controls.target.copy(center);
-    this.camera.position.copy(center).add(new THREE.Vector3(0.55, -0.75, 0.45).multiplyScalar(1.1 * this.size));
+    this.camera.position.copy(center).add(new THREE.Vector3(0.55, -0.75, 0.45).multiplyScalar(1.1 * size));
     this.camera.up.set(0, 0, 1);
-    this.camera.near = this.size / 1000;
-    this.camera.far = this.size * 100;
+    this.camera.near = size / 1000;
+    this.camera.far = size * 100;
     this.camera.updateProjectionMatrix();
     this.controls.update();
   }
