@@ -137,6 +137,15 @@ class Studio {
     this.viewer.addPiece(p, direction, color);
   }
 
+  // The next up axis (z, y, x): models made y-up otherwise lie on their side.
+  cycleUp() {
+    this.viewer.up = { z: 'y', y: 'x', x: 'z' }[this.viewer.up];
+    $('up').textContent = `up: ${this.viewer.up}`;
+    this.viewer.frame(this.viewer.pieces.visible ? this.viewer.pieces : this.viewer.model);
+    this.viewer.bakeShading();
+    this.viewer.render();
+  }
+
   showPieces(on) {
     this.viewer.pieces.visible = on;
     this.viewer.model.visible = !on;
@@ -296,6 +305,7 @@ class Studio {
     $('sides').addEventListener('change', () => { this.recolor(); this.drawLegend(); });
     $('lines').addEventListener('change', () => { this.viewer.lines.visible = $('lines').checked; this.viewer.render(); });
     $('molds-visible').addEventListener('change', () => this.showPieces($('molds-visible').checked));
+    $('up').addEventListener('click', () => this.cycleUp());
     window.addEventListener('keydown', (e) => this.key(e));
   }
 
@@ -313,6 +323,7 @@ class Studio {
     else if (k === 'c') this.tools.select('cut');
     else if (k === 'm') this.tools.select('merge');
     else if (k === 'r') { if (!this.busy) this.rerun(); }
+    else if (k === 'u') this.cycleUp();
     else if (e.key === 'Enter') this.tools.applyCut(e.shiftKey);
     else if (e.key === 'Backspace') this.tools.dropCutPoint();
     else if (e.key === 'Escape') this.tools.clear();

@@ -34,6 +34,7 @@ export class Viewer {
     this.camera.add(sun);
     this.scene.add(this.camera);
     this.model = null;
+    this.up = 'z';
     this.lines = new THREE.Group();
     this.boundaryMaterial = new THREE.LineBasicMaterial({ color: 0x111111 });
     this.partingMaterial = new THREE.LineBasicMaterial({ color: 0xffffff });
@@ -139,15 +140,18 @@ export class Viewer {
   }
 
   // Points the camera at `object` (S_low, or the mold pieces) from the front
-  // right, z up; the model's size (brush radii) is S_low's.
+  // right and above, with this.up ('z', 'y' or 'x') up; the model's size
+  // (brush radii) is S_low's.
   frame(object = this.model) {
     const box = new THREE.Box3().setFromObject(object);
     const center = box.getCenter(new THREE.Vector3());
     const size = box.getSize(new THREE.Vector3()).length();
     if (object === this.model) this.size = size;
+    const view = { z: [[0.55, -0.75, 0.45], [0, 0, 1]], y: [[0.55, 0.45, 0.75], [0, 1, 0]],
+                   x: [[0.45, 0.55, 0.75], [1, 0, 0]] }[this.up];
     this.controls.target.copy(center);
-    this.camera.position.copy(center).add(new THREE.Vector3(0.55, -0.75, 0.45).multiplyScalar(1.1 * size));
-    this.camera.up.set(0, 0, 1);
+    this.camera.position.copy(center).add(new THREE.Vector3(...view[0]).multiplyScalar(1.1 * size));
+    this.camera.up.set(...view[1]);
     this.camera.near = size / 1000;
     this.camera.far = size * 100;
     this.camera.updateProjectionMatrix();

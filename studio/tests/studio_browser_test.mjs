@@ -10,7 +10,8 @@
 // session as it was; Make molds shows its progress and Cancel stops it with an
 // error in the page and the session as it was; Make molds run to the end
 // shows the pieces, and each cast part and mold piece passes the independent
-// checks (CHECKER --cast); the draft map arrives for a part's direction;
+// checks (CHECKER --cast); the draft map arrives for a part's direction; U
+// cycles the view's up axis;
 // screenshots are written to WORK_DIR/browser/studio.png and studio-molds.png.
 // Usage: node studio_browser_test.mjs FABVDB SHARED_DATA CHECKER WORK_DIR
 import assert from 'node:assert/strict';
@@ -317,6 +318,17 @@ try {
   await page.check('input[value=draft]');
   await page.waitForFunction(() => studio.draft && studio.draft.length === studio.labels.length, null, { timeout: 60000 });
   await page.check('input[value=parts]');
+  // U cycles the up axis z -> y -> x -> z, for models made y-up or x-up
+  // (keys go to the view, not to a focused input).
+  await page.evaluate(() => document.activeElement.blur());
+  const ups = [];
+  for (let i = 0; i < 3; ++i) {
+    await page.keyboard.press('u');
+    ups.push(await page.evaluate(() => [document.getElementById('up').textContent,
+                                        studio.viewer.camera.up.toArray().join(',')]));
+  }
+  assert.deepEqual(ups, [['up: y', '0,1,0'], ['up: x', '1,0,0'], ['up: z', '0,0,1']]);
+  step('U cycles the up axis: y, x, z');
   await page.keyboard.press('o');
   await page.evaluate(() => { studio.viewer.frame(); studio.viewer.render(); });
   await page.screenshot({ path: `${dir}/studio.png` });
