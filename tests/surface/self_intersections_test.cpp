@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <atomic>
 
 #include "core/error.h"
+#include "support/pair_checks.h"
 #include "support/shapes.h"
 
 namespace fabvdb::surface {
@@ -107,13 +107,7 @@ TEST(SelfIntersections, OverlappingSpheresPairAcrossOnly) {
     const Mesh mesh = test::merged(a, test::make_sphere({0.9, 0.2, 0.1}, 0.6, 3));
     const Pairs pairs = pairs_of(mesh);
     ASSERT_GT(pairs.size(), 20u);
-    EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end()));
-    EXPECT_EQ(std::adjacent_find(pairs.begin(), pairs.end()), pairs.end());
-    const uint32_t split = uint32_t(a.triangles.size());
-    for (const auto& [i, j] : pairs) {
-        EXPECT_LT(i, split);
-        EXPECT_GE(j, split);
-    }
+    test::expect_sorted_pairs_across(pairs, uint32_t(a.triangles.size()));
     // Apart, they meet nowhere.
     EXPECT_TRUE(pairs_of(test::merged(a, test::make_sphere({2.7, 0.2, 0.1}, 0.6, 3))).empty());
 }

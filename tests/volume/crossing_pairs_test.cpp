@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <utility>
 #include <vector>
 
+#include "support/pair_checks.h"
 #include "support/shapes.h"
 
 namespace fabvdb::volume {
@@ -148,13 +148,7 @@ TEST(CrossingPairs, SortedAndRepeatableOnManyCrossings) {
     const Mesh mesh = test::merged(a, test::make_sphere({0.9, 0.2, 0.1}, 0.6, 4));
     const Pairs pairs = crossing_pairs(mesh);
     ASSERT_GT(pairs.size(), 50u);
-    EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end()));
-    EXPECT_EQ(std::adjacent_find(pairs.begin(), pairs.end()), pairs.end());
-    const uint32_t split = uint32_t(a.triangles.size());
-    for (const auto& [i, j] : pairs) {
-        EXPECT_LT(i, split);
-        EXPECT_GE(j, split);
-    }
+    test::expect_sorted_pairs_across(pairs, uint32_t(a.triangles.size()));
     EXPECT_EQ(crossing_pairs(mesh), pairs);
 }
 
