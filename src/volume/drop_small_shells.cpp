@@ -4,10 +4,10 @@
 #include <algorithm>
 
 #include <openvdb/tools/Composite.h>
-#include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetUtil.h>
 
 #include "core/error.h"
+#include "volume/level_set_volume.h"
 
 namespace fabvdb::volume {
 
@@ -30,7 +30,7 @@ ShellCounts drop_small_shells(openvdb::FloatGrid::Ptr& grid, double min_volume, 
     progress.check();
     std::vector<openvdb::FloatGrid::Ptr> kept;
     for (size_t i = 0; i < shells.size(); ++i) {
-        if (shells[i]->activeVoxelCount() > 0 && openvdb::tools::levelSetVolume(*shells[i]) >= min_volume)
+        if (shells[i]->activeVoxelCount() > 0 && level_set_volume(*shells[i]) >= min_volume)
             kept.push_back(shells[i]);
         else
             ++counts.dropped;

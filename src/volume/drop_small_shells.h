@@ -1,6 +1,6 @@
 //! Removal of the small solid pieces of a level set: splits the solid into
 //! its connected shells (OpenVDB segmentSDF), measures each one's volume
-//! (levelSetVolume) and keeps the union of those of at least `min_volume`
+//! (volume/level_set_volume) and keeps the union of those of at least `min_volume`
 //! mm³ (0 keeps everything, and only counts the shells: the connected pieces
 //! of the zero-crossing voxels, as segmentSDF splits them). The grid is
 //! replaced only when something was dropped; it may become empty.
