@@ -177,5 +177,6 @@ const cli_command cmd_drain = {
     "Prints the cleaning routine for the holes: the turns, in words, that drain the most (replay it with\n"
     "`fabvdb powder-sim --routine`), with the powder predicted to stay under it and under random turns.\n"
     "A part with no cavity (nowhere thicker than twice the wall) needs no holes: it is written solid and\n"
-    "undrilled, with a warning, and exit 0.",
+    "undrilled, with a warning, and exit 0. A cavity that no hole of --hole-diameter reaches cleanly\n"
+    "(too small, or behind a wall over twice --wall) is filled solid, with a warning.",
     options, sizeof(options) / sizeof(options[0]), 1, 1, run_drain};

@@ -3,8 +3,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 #include <openvdb/tools/Composite.h>
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/MeshToVolume.h>
 
 #include "core/error.h"
@@ -13,6 +17,7 @@
 #include "volume/drill_holes.h"
 #include "volume/extract_mesh.h"
 #include "volume/hollow.h"
+#include "volume/level_set_volume.h"
 #include "volume/signed_distance.h"
 
 namespace fabvdb::powder {
@@ -53,6 +58,39 @@ openvdb::FloatGrid::Ptr level_set_of(const Mesh& closed, double voxel) {
         *openvdb::math::Transform::createLinearTransform(voxel), points, triangles, 3.0f);
 }
 
+
+//! The cavities that stay open once the connected voids of `cavity` that
+//! hold one of `points` on their surface are filled: nullptr when none
+//! stays. Adds the filled voids' count and volume (mm³).
+openvdb::FloatGrid::Ptr fill_cavities_at(const openvdb::FloatGrid& cavity, const std::vector<Vec3>& points,
+                                         size_t& filled_count, double& filled_volume) {
+    std::vector<openvdb::FloatGrid::Ptr> voids;
+    openvdb::tools::segmentSDF(cavity, voids);
+    std::vector<bool> filled(voids.size(), false);
+    for (const Vec3& point : points) {
+        const openvdb::Vec3d world(point[0], point[1], point[2]);
+        size_t nearest = 0;
+        double least = std::numeric_limits<double>::infinity();
+        for (size_t v = 0; v < voids.size(); ++v) {
+            const double value = std::abs(openvdb::tools::BoxSampler::sample(
+                voids[v]->tree(), voids[v]->transform().worldToIndex(world)));
+            if (value < least) least = value, nearest = v;
+        }
+        filled[nearest] = true;
+    }
+    openvdb::FloatGrid::Ptr open;
+    for (size_t v = 0; v < voids.size(); ++v) {
+        if (filled[v]) {
+            ++filled_count;
+            filled_volume += volume::level_set_volume(*voids[v]);
+        } else if (!open) {
+            open = voids[v];
+        } else {
+            openvdb::tools::csgUnion(*open, *voids[v]);
+        }
+    }
+    return open;
+}
 }  // namespace
 
 bool is_hollow_shell(const Mesh& mesh) {
@@ -110,7 +148,7 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         result.drilled = std::move(shells_mesh);
         return result;
     }
-    const openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
+    openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
     // Voids with no voxel inside, or only crumbs of one that the surface
     // extraction drops as noise, trap no powder the model can see.
     if (!holds_inside(*cavity) || volume::extract_mesh(*cavity, 0.0, progress).triangles.empty()) {
@@ -120,17 +158,38 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         result.drilled = std::move(shells_mesh);
         return result;
     }
-    result.has_cavity = true;
     const openvdb::FloatGrid::Ptr part = level_set_of(shells.outer, voxel);
-    result.shell = openvdb::tools::csgDifferenceCopy(*part, *cavity);
-    progress.check();
-    lap("level sets");
-
     DrainPlanOptions plan_options = options.plan;
     plan_options.nominal_wall = options.wall;
-    result.plan = plan_drain_holes(*part, *cavity, *result.shell, plan_options, progress);
-    for (const auto& [name, seconds] : result.plan.timings) result.timings[name] += seconds;
-    last = std::chrono::steady_clock::now();
+    size_t filled_count = 0;
+    double filled_volume = 0.0;
+    for (;;) {
+        result.shell = openvdb::tools::csgDifferenceCopy(*part, *cavity);
+        progress.check();
+        lap("level sets");
+        result.plan = plan_drain_holes(*part, *cavity, *result.shell, plan_options, progress);
+        for (const auto& [name, seconds] : result.plan.timings) result.timings[name] += seconds;
+        last = std::chrono::steady_clock::now();
+        if (result.plan.cavities_without_site.empty()) break;
+        cavity = fill_cavities_at(*cavity, result.plan.cavities_without_site, filled_count, filled_volume);
+        if (!cavity) break;
+    }
+    if (filled_count > 0) {
+        std::ostringstream message;
+        message << options.input_name << ": " << filled_count << (filled_count == 1 ? " cavity" : " cavities")
+                << " (" << filled_volume << " mm^3) too small or thin for a drain hole of "
+                << plan_options.hole_diameter << " mm to pass cleanly through the wall "
+                << (cavity ? "is left solid" : "are left solid: the part is returned solid, undrilled")
+                << " (a smaller hole diameter may fit)";
+        result.warnings.push_back(message.str());
+    }
+    if (!cavity) {
+        result.shell.reset();
+        result.plan = DrainPlan{};
+        result.drilled = shells.outer;
+        return result;
+    }
+    result.has_cavity = true;
 
     std::vector<volume::DrillCylinder> cylinders;
     for (const DrainHole& hole : result.plan.holes) {

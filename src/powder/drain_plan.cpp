@@ -2,7 +2,6 @@
 #include "powder/drain_plan.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/icosphere.h"
@@ -41,6 +40,23 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     plan.patches = cluster_cavity_patches(plan.cavity_surface, options.patch_count);
     clock.lap("patches");
 
+    HoleCandidateOptions candidate_options;
+    candidate_options.diameter = options.hole_diameter;
+    candidate_options.nominal_wall = options.nominal_wall;
+    const std::vector<DrainHole> candidates =
+        hole_candidates(plan.patches, shell, part, options.keep_out, candidate_options, progress);
+    plan.candidate_count = candidates.size();
+    std::vector<bool> has_site(plan.patches.cavity_count, false);
+    for (const DrainHole& candidate : candidates) has_site[candidate.cavity] = true;
+    for (size_t p = 0; p < plan.patches.size(); ++p) {
+        const uint32_t c = plan.patches.cavity[p];
+        if (has_site[c]) continue;
+        has_site[c] = true;
+        plan.cavities_without_site.push_back(plan.patches.site[p]);
+    }
+    clock.lap("hole candidates");
+    if (!plan.cavities_without_site.empty()) return plan;
+
     const SurfaceRayCaster caster(plan.cavity_surface);
     std::vector<Vec3> gravities;
     if (options.orientations.empty())
@@ -59,20 +75,6 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
         drop_cavity_powder(cavity, plan.patches, caster, first, options.powder_samples, progress);
     clock.lap("powder drop");
 
-    HoleCandidateOptions candidate_options;
-    candidate_options.diameter = options.hole_diameter;
-    candidate_options.nominal_wall = options.nominal_wall;
-    const std::vector<DrainHole> candidates =
-        hole_candidates(plan.patches, shell, part, options.keep_out, candidate_options, progress);
-    plan.candidate_count = candidates.size();
-    if (candidates.empty()) {
-        std::ostringstream message;
-        message << "input: no site on its cavities lets a drain hole of " << options.hole_diameter
-                << " mm pass cleanly through the wall (the cavities are too small or thin for it; a smaller hole "
-                   "diameter may fit)";
-        throw Error(FABVDB_ERR_BAD_INPUT, message.str());
-    }
-    clock.lap("hole candidates");
 
     DrainabilityOptions model_options;
     model_options.repose_radians = options.repose_radians;

@@ -4,7 +4,10 @@
 //! drops the cavity's powder, finds the candidate sites, searches the holes
 //! with their cleaning routine and places the lowest-point baseline with as
 //! many holes per cavity. Returns the holes, the routine, the model's
-//! evaluation of both sets, per-stage timings.
+//! evaluation of both sets, per-stage timings. A cavity on which no hole
+//! passes cleanly through the wall stops the plan after the candidate
+//! sites: it returns a point on each such cavity's surface and nothing else
+//! (the caller fills those cavities and plans again).
 //! Reports progress; cancellable (Error(CANCELLED), no partial result).
 #pragma once
 
@@ -47,6 +50,9 @@ struct DrainPlan {
     Mesh cavity_surface;
     CavityPatches patches;
     size_t candidate_count = 0;
+    //! A point on the surface of each cavity that no candidate site reaches;
+    //! when not empty, the rest of the plan is empty.
+    std::vector<Vec3> cavities_without_site;
     std::vector<DrainHole> holes;
     DrainEvaluation evaluation;  //!< the prediction under random routines (their mean)
     //! The cleaning routine: the gravity of each later turn (the first,

@@ -4,7 +4,9 @@
 // against the void's own volume; a solid sphere is hollowed with the wall;
 // with automatic holes the bunny's prediction ends under the target; over
 // the shared models the search, the routine and the heat map agree with
-// the one prediction; a void one voxel thin is drained, not refused.
+// the one prediction; a void one voxel thin is drained, not refused; a
+// void too small for a drain hole is filled, and the part comes back solid
+// when no void takes one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,6 +57,35 @@ TEST(DrainPart, VoidOneVoxelThinIsDrained) {
     EXPECT_TRUE(result.has_cavity);
     EXPECT_EQ(result.plan.holes.size(), 1u);
     EXPECT_GT(result.plan.evaluation.total_volume, 0.0);
+}
+
+// A 60 x 30 x 30 block with two inward-facing voids: a 22 mm cube behind
+// 4 mm walls and a 4 mm cube 12 mm deep in the block, which no hole
+// reaches through a wall under twice the nominal 3 mm. The small void is filled and the big
+// one drilled; alone, the small void leaves the part solid and undrilled.
+// Both with a warning, and the written part has no inward shell left.
+TEST(DrainPart, VoidTooSmallForAHoleIsFilled) {
+    const fabvdb::Mesh block = fabvdb::test::make_box({0, 0, 0}, {60, 30, 30});
+    const fabvdb::Mesh big = fabvdb::test::flipped(fabvdb::test::make_box({4, 4, 4}, {26, 26, 26}));
+    const fabvdb::Mesh small = fabvdb::test::flipped(fabvdb::test::make_box({40, 13, 13}, {44, 17, 17}));
+    fabvdb::Progress progress;
+    const auto both = fabvdb::powder::drain_part(fabvdb::test::merged(fabvdb::test::merged(block, big), small),
+                                                 small_drain(2), progress);
+    EXPECT_TRUE(both.has_cavity);
+    EXPECT_EQ(both.plan.patches.cavity_count, 1u);
+    ASSERT_EQ(both.plan.holes.size(), 2u);
+    for (const auto& hole : both.plan.holes) EXPECT_LT(hole.center[0], 30.0);
+    ASSERT_EQ(both.warnings.size(), 1u);
+    EXPECT_NE(both.warnings[0].find("1 cavity"), std::string::npos) << both.warnings[0];
+    const double big_volume = 22.0 * 22.0 * 22.0;
+    EXPECT_NEAR(both.plan.evaluation.total_volume, big_volume, 0.1 * big_volume);
+
+    const auto alone = fabvdb::powder::drain_part(fabvdb::test::merged(block, small), small_drain(2), progress);
+    EXPECT_FALSE(alone.has_cavity);
+    EXPECT_TRUE(alone.plan.holes.empty());
+    ASSERT_EQ(alone.warnings.size(), 1u);
+    EXPECT_NE(alone.warnings[0].find("returned solid"), std::string::npos) << alone.warnings[0];
+    EXPECT_NEAR(fabvdb::test::mesh_volume(alone.drilled), 60.0 * 30.0 * 30.0, 0.01 * 60.0 * 30.0 * 30.0);
 }
 
 TEST(DrainPart, SolidInputIsHollowedWithTheWall) {
