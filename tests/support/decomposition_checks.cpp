@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 
 namespace fabvdb::test {
 
@@ -22,12 +23,14 @@ Point crs(const Point& a, const Point& b) {
 }
 double dt(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-//! Number of connected pieces of `faces` joined across shared edges.
-size_t pieces(const std::vector<Face>& faces) {
+//! Number of connected pieces of `faces` joined across shared edges; the
+//! piece of each face in `piece_of` if given.
+size_t pieces(const std::vector<Face>& faces, std::vector<size_t>* piece_of = nullptr) {
     std::map<std::pair<uint32_t, uint32_t>, std::vector<size_t>> by_edge;
     for (size_t i = 0; i < faces.size(); ++i)
         for (int k = 0; k < 3; ++k) by_edge[std::minmax(faces[i][k], faces[i][(k + 1) % 3])].push_back(i);
     std::vector<char> seen(faces.size(), 0);
+    if (piece_of) piece_of->assign(faces.size(), 0);
     size_t count = 0;
     for (size_t s = 0; s < faces.size(); ++s) {
         if (seen[s]) continue;
@@ -37,6 +40,7 @@ size_t pieces(const std::vector<Face>& faces) {
         while (!stack.empty()) {
             const size_t i = stack.back();
             stack.pop_back();
+            if (piece_of) (*piece_of)[i] = count - 1;
             for (int k = 0; k < 3; ++k)
                 for (size_t j : by_edge[std::minmax(faces[i][k], faces[i][(k + 1) % 3])])
                     if (!seen[j]) {
@@ -95,11 +99,18 @@ std::vector<double> check_decomposition(const nlohmann::json& doc) {
         const auto surface = part["surface"]["triangles"].get<std::vector<Face>>();
         const auto upper = part["surface"]["upper"].get<std::vector<int>>();
         const auto kind = part["surface"]["kind"].get<std::vector<int>>();
+        // A part that is a whole closed shell of a hollow decomposition has
+        // its inner surface apart from its outer one: each piece of the
+        // part's surface is split once, into at most one M+ and one M- piece.
+        std::vector<size_t> surface_piece;
+        pieces(surface, &surface_piece);
         std::vector<Face> top, bottom;
+        std::set<size_t> top_in, bottom_in;
         const Point d = part["parting_direction"].get<Point>();
         double overhang = 0;
         for (size_t i = 0; i < surface.size(); ++i) {
             (upper[i] ? top : bottom).push_back(surface[i]);
+            (upper[i] ? top_in : bottom_in).insert(surface_piece[i]);
             if (kind[i] == 1) continue;  // inner triangles are invisible
             const Face& f = surface[i];
             const Point c = crs(sub(corners[f[1]], corners[f[0]]), sub(corners[f[2]], corners[f[0]]));
@@ -110,8 +121,8 @@ std::vector<double> check_decomposition(const nlohmann::json& doc) {
             if (theta > M_PI / 2 - draft)
                 overhang += -std::cos(std::min(theta + draft, M_PI)) * 0.5 * twice * s * s * std::abs(facing);
         }
-        EXPECT_LE(pieces(top), 1u) << "M+ of part " << id;
-        EXPECT_LE(pieces(bottom), 1u) << "M- of part " << id;
+        EXPECT_EQ(pieces(top), top_in.size()) << "M+ of part " << id;
+        EXPECT_EQ(pieces(bottom), bottom_in.size()) << "M- of part " << id;
         EXPECT_NEAR(overhang, double(part["overhang_energy"]), 1e-9 + 1e-6 * overhang) << "part " << id;
     }
     for (size_t t = 0; t < owner.size(); ++t) EXPECT_GE(owner[t], 0) << "triangle " << t << " in no part";

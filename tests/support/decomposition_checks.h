@@ -2,7 +2,9 @@
 //! for tests (gtest expectations; no code shared with the decomposition): it
 //! is read back as plain JSON and measured with code of its own — ownership of
 //! every S_low triangle (disjoint, covering), edge-adjacency pieces of each
-//! part and of its M⁺ and M⁻ surface triangles, the overhang energy of every
+//! part and of its M⁺ and M⁻ surface triangles (one of each per piece of the
+//! part's surface: a part that is a whole closed shell has its inner surface
+//! apart), the overhang energy of every
 //! part evaluated from the written triangles against the reported one — and
 //! the part boundaries measured from the written triangles and labels
 //! (length, and turning: the sum over boundary vertices with two boundary
