@@ -46,17 +46,16 @@ std::vector<uint64_t> above_cone(const PowderSamples& powder, const DrainHole& h
 }
 
 //! Calls `visit(sample)` for each later-grid sample that drains through
-//! `hole` above the surface of repose it leaves in later turn `turn`, and
+//! `hole` above the surface of repose it leaves under `gravity` (whose
+//! sublevel forest and relief on the later grid are given), and
 //! `under(sample)` for each the surface reaches and buries (`source`: the
 //! later grid's sample nearest the hole).
 template <class Visit, class Under>
-void walk_above_surface(const TurnSamples& samples, const DrainHole& hole, uint32_t source, size_t turn,
-                        double repose_radians, Visit visit, Under under) {
+void walk_above_surface(const TurnSamples& samples, const DrainHole& hole, uint32_t source, const Vec3& gravity,
+                        const SublevelForest& forest, const SampleRelief& relief, double repose_radians, Visit visit,
+                        Under under) {
     const PowderSamples& powder = *samples.powder;
     const SampleGrid& grid = samples.later_grid;
-    const Vec3& gravity = samples.later_gravity[turn];
-    const SublevelForest& forest = samples.later_forests[turn];
-    const SampleRelief& relief = samples.later_relief[turn];
     // A source in another cavity (the hole's nearest sample across a thin
     // wall) drains nothing of this one.
     if (source == kNoSample || samples.later_cavity[source] != hole.cavity ||
@@ -130,11 +129,29 @@ HoleReach hole_reach(const TurnSamples& samples, const DrainHole& hole, Crater c
     const size_t turns = samples.later_gravity.size();
     HoleReach result;
     result.cavity = hole.cavity;
-    result.first = above_cone(*samples.powder, hole, samples.first_grid.nearest(hole.center), samples.first_chains,
-                              samples.first_cavity, samples.first_gravity, repose_radians);
+    const uint32_t source = samples.later_grid.nearest(hole.center);
+    if (crater == Crater::cone) {
+        result.first = above_cone(*samples.powder, hole, samples.first_grid.nearest(hole.center), samples.first_chains,
+                                  samples.first_cavity, samples.first_gravity, repose_radians);
+    } else {
+        // Above the surface of repose on the later grid; a first-grid sample
+        // drains with the later-grid sample nearest it.
+        std::vector<char> drains(samples.later_grid.size(), 0);
+        walk_above_surface(
+            samples, hole, source, samples.first_gravity, samples.first_later_forest, samples.first_later_relief,
+            repose_radians, [&](uint32_t a) { drains[a] = 1; }, [](uint32_t) {});
+        uint64_t any = 0;
+        for (size_t a = 0; a < samples.first_grid.size(); ++a) {
+            const uint32_t b = samples.later_of_first[a];
+            if (b == kNoSample || !drains[b] || samples.first_cavity[a] != hole.cavity) continue;
+            if (result.first.empty()) result.first.assign((size_t(samples.first_count[hole.cavity]) + 63) / 64, 0);
+            set_bit(result.first, samples.first_chains.rank[a]);
+            any = 1;
+        }
+        if (!any) result.first.clear();
+    }
     result.later.resize(turns);
     result.later_rim.resize(turns);
-    const uint32_t source = samples.later_grid.nearest(hole.center);
     const size_t words = (size_t(samples.later_count[hole.cavity]) + 63) / 64;
     tbb::parallel_for(size_t(0), turns, [&](size_t k) {
         if (crater == Crater::cone)
@@ -146,7 +163,8 @@ HoleReach hole_reach(const TurnSamples& samples, const DrainHole& hole, Crater c
                 set_bit(bits, samples.later_chains[k].rank[a]);
             };
             walk_above_surface(
-                samples, hole, source, k, repose_radians, [&](uint32_t a) { mark(result.later[k], a); },
+                samples, hole, source, samples.later_gravity[k], samples.later_forests[k], samples.later_relief[k],
+                repose_radians, [&](uint32_t a) { mark(result.later[k], a); },
                 [&](uint32_t a) { mark(result.later_rim[k], a); });
         }
     });

@@ -1,11 +1,13 @@
 //! What one drain hole drains alone, turn by turn (docs/design/drainability.md):
-//! - as printed, the powder above the hole's crater cone (hole_tunnel.h)
-//!   that reaches the mouth without climbing (the ancestors, in the turn's
-//!   sublevel forest, of the sample nearest the hole);
-//! - in each later turn, by Crater::surface the powder above the surface of
-//!   repose rising with slope θ_r from the crater through the cavity (never
-//!   below a floor, plugged where it fills a passage), or by Crater::cone
-//!   the powder above the crater's cone (more, and far cheaper to find).
+//! in each turn, the first (as printed) and every later one, only powder
+//! that reaches the mouth without climbing (the ancestors, in the turn's
+//! sublevel forest, of the sample nearest the hole), and of it
+//! - by Crater::surface the powder above the surface of repose rising with
+//!   slope θ_r from the crater through the cavity (never below a floor,
+//!   plugged where it fills a passage), found on the later turns' grid (a
+//!   first-turn sample drains with the later-grid sample nearest it);
+//! - by Crater::cone the powder above the crater's cone (more, and far
+//!   cheaper to find).
 //! Nothing drains through a hole whose tunnel does not pass powder for that
 //! gravity. Thread-safe; costs one walk up a chain per turn (by the cone),
 //! or one Dijkstra over the chain's samples per turn (by the surface), the
@@ -20,8 +22,8 @@
 
 namespace fabvdb::powder {
 
-//! What drains in the later turns: powder above the surface of repose
-//! (the prediction), or above the crater's cone (the hole search's objective).
+//! What drains: powder above the surface of repose (the prediction), or
+//! above the crater's cone (the hole search's objective).
 enum class Crater { surface, cone };
 
 //! Bits over the hole's cavity's samples by rank (sample_bits.h).

@@ -128,6 +128,12 @@ TurnSamples turn_samples(const CavityPatches& patches, const std::vector<Orienta
         result.later_forests[k] = sublevel_forest(result.later_grid.neighbours, result.later_relief[k].height);
         result.later_chains[k] = chains(result.later_grid, result.later_forests[k], result.later_cavity, patches.cavity_count);
     });
+    result.first_later_relief = later_relief(result, first.gravity);
+    result.first_later_forest = sublevel_forest(result.later_grid.neighbours, result.first_later_relief.height);
+    result.later_of_first.resize(result.first_grid.size());
+    tbb::parallel_for(size_t(0), result.first_grid.size(), [&](size_t a) {
+        result.later_of_first[a] = result.later_grid.nearest(powder.position[result.first_grid.sample[a]]);
+    });
     // Each powder sample's rank among its cavity's first-turn samples (the
     // first-turn grid holds every sample).
     result.first_rank.resize(powder.position.size());

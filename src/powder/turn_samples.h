@@ -5,9 +5,10 @@
 //! the sublevel forest of those heights (where powder flows without
 //! climbing, sublevel_forest.h) and its ancestor chains as runs of ranks;
 //! for the later grid also each sample's floor height and its links to the
-//! 26 cells around it. Per sample: its cavity, its rank in its cavity.
-//! Keeps a pointer to `powder` (it must outlive the result). Costs one
-//! sublevel forest per turn (in parallel).
+//! 26 cells around it, and the first turn's forest and floors on it too.
+//! Per sample: its cavity, its rank in its cavity. Keeps a pointer to
+//! `powder` (it must outlive the result). Costs one sublevel forest per turn
+//! (in parallel).
 #pragma once
 
 #include <array>
@@ -65,6 +66,11 @@ struct TurnSamples {
     std::vector<SublevelForest> later_forests;
     std::vector<SampleChains> later_chains;
     std::vector<SampleRelief> later_relief;
+    //! The first turn on the later grid too (for the surface of repose), and
+    //! per first-grid sample the later-grid sample nearest it (kNoSample if none).
+    SublevelForest first_later_forest;
+    SampleRelief first_later_relief;
+    std::vector<uint32_t> later_of_first;
     //! Per sample of each grid: its cavity. Per cavity: sample count of each grid.
     std::vector<uint32_t> first_cavity, later_cavity;
     std::vector<uint32_t> first_count, later_count;

@@ -9,7 +9,8 @@
 //! - As printed (gravity −z), and in a later turn −z by the cone, exactly those.
 //! - A later turn +z (the hole points up) drains nothing.
 //! - By the surface of repose: never more than by the cone, everything over
-//!   the mouth; the rim it buries does not drain; as printed still the cone.
+//!   the mouth; the rim it buries does not drain; as printed (the same
+//!   gravity as the later turn −z) the same samples.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -87,6 +88,6 @@ TEST(HoleReach, BySurfaceNeverMoreThanByTheCone) {
     }
     for (uint32_t a : named(reach.later_rim[0], by_rank)) EXPECT_FALSE(surface.count(a)) << a;
     EXPECT_TRUE(reach.later[1].empty());
-    // As printed the cone, whatever the crater of the later turns.
-    EXPECT_EQ(named(reach.first, block.samples.first_chains.by_rank[0]), cone);
+    // As printed, gravity −z as in later turn 0: the same surface.
+    EXPECT_EQ(named(reach.first, block.samples.first_chains.by_rank[0]), surface);
 }
