@@ -9,7 +9,7 @@
 
 #include "api/guard.h"
 #include "api/options.h"
-#include "core/atomic_folder.h"
+#include "core/atomic_output.h"
 #include "core/stage_clock.h"
 #include "surface/decomposition_parts.h"
 #include "surface/mold_generation.h"
@@ -96,7 +96,7 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         const fabvdb_mold_options options = checked_options(opts);
         std::map<std::string, double> own_stages;
         fabvdb::StageClock clock(own_stages);
-        fabvdb::AtomicFolder folder(out_dir);
+        fabvdb::AtomicOutput folder(out_dir, fabvdb::AtomicOutput::Kind::folder);
         const std::filesystem::path root(folder.temp_path());
         nlohmann::json report;
 

@@ -13,7 +13,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include "core/atomic_folder.h"
+#include "core/atomic_output.h"
 #include "core/error.h"
 #include "surface/moldability_energy.h"
 #include "core/vec3_ops.h"
@@ -269,7 +269,7 @@ nlohmann::json decomposition_document(const Shell& shell, const MoldabilityTerms
 void write_decomposition(const std::string& folder, const Mesh& input, const Shell& shell,
                          const MoldabilityTerms& terms, const Decomposition& decomposition,
                          const DecompositionOptions& options) {
-    AtomicFolder output(folder);
+    AtomicOutput output(folder, AtomicOutput::Kind::folder);
     const std::string json_path = output.temp_path() + "/decomposition.json";
     std::ofstream json(json_path);
     json << decomposition_document(shell, terms, decomposition, options).dump(1) << "\n";

@@ -1,14 +1,10 @@
-// Tests of Progress (stages, throttling, cancellation) and AtomicOutput (no
-// partial files).
+// Tests of Progress (stages, throttling, cancellation).
 #include <gtest/gtest.h>
 
 #include <atomic>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
-#include "core/atomic_output.h"
 #include "core/error.h"
 #include "core/progress.h"
 
@@ -60,26 +56,6 @@ TEST(Progress, FlagCancels) {
     EXPECT_NO_THROW(progress.check());
     flag = true;
     EXPECT_THROW(progress.check(), fabvdb::Error);
-}
-
-TEST(AtomicOutput, NoFileUnlessCommitted) {
-    const auto dir = std::filesystem::temp_directory_path() / "fabvdb_atomic_test";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    const std::string target = (dir / "out.txt").string();
-    {
-        fabvdb::AtomicOutput out(target);
-        std::ofstream(out.temp_path()) << "half";
-    }
-    EXPECT_FALSE(std::filesystem::exists(target));
-    EXPECT_TRUE(std::filesystem::is_empty(dir));
-    fabvdb::write_text_file_atomically(target, "whole");
-    std::ifstream in(target);
-    std::string text;
-    in >> text;
-    EXPECT_EQ(text, "whole");
-    EXPECT_THROW(fabvdb::write_text_file_atomically((dir / "missing" / "x.txt").string(), "x"), fabvdb::Error);
-    std::filesystem::remove_all(dir);
 }
 
 }  // namespace
