@@ -52,7 +52,9 @@
 #include "core/progress.h"
 #include "io/mesh_io.h"
 #include "support/decomposition_checks.h"
+#include "support/check_vec3.h"
 #include "support/ray_cast.h"
+#include "support/winding_number.h"
 
 namespace {
 
@@ -65,11 +67,11 @@ using Triangle3 = Kernel::Triangle_3;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+using fabvdb::test::cross;
+using fabvdb::test::dot;
+using fabvdb::test::norm;
+using fabvdb::test::sub;
+using fabvdb::test::winding_number;
 
 struct Failure : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -332,8 +334,7 @@ json validity(const Mesh& mesh, std::vector<uint32_t>& labels, std::vector<int>&
         double volume = 0;
         for (const auto& t : mesh.triangles) {
             const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-            volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                       a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+            volume += dot(a, cross(b, c)) / 6;
         }
         out["volume"] = volume;
         if (!(volume > 0)) defects.push_back("volume not positive");
@@ -349,33 +350,9 @@ std::vector<double> shell_volumes(const Mesh& mesh, const std::vector<uint32_t>&
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
         const auto& t = mesh.triangles[i];
         const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-        volume[labels[i]] += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                              a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+        volume[labels[i]] += dot(a, cross(b, c)) / 6;
     }
     return volume;
-}
-
-//! Generalized winding number of `mesh` at `p` (sum of the triangles' signed
-//! solid angles over 4π): about 1 inside a closed outward surface, 0 outside,
-//! and a vote of the triangles for a soup.
-double winding_number(const Mesh& mesh, const Vec3& p) {
-    double total = 0;
-    for (const auto& t : mesh.triangles) {
-        Vec3 a, b, c;
-        for (int k = 0; k < 3; ++k) {
-            a[k] = mesh.vertices[t[0]][k] - p[k];
-            b[k] = mesh.vertices[t[1]][k] - p[k];
-            c[k] = mesh.vertices[t[2]][k] - p[k];
-        }
-        const double la = norm(a), lb = norm(b), lc = norm(c);
-        const Vec3 bc = cross(b, c);
-        const double numerator = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
-        const double denominator = la * lb * lc + (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * lc +
-                                   (b[0] * c[0] + b[1] * c[1] + b[2] * c[2]) * la +
-                                   (c[0] * a[0] + c[1] * a[1] + c[2] * a[2]) * lb;
-        total += 2.0 * std::atan2(numerator, denominator);
-    }
-    return total / (4.0 * M_PI);
 }
 
 //! Points just inside a void shell's void: in front of its 7 largest

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "powder/cavity_patches.h"
+#include "support/check_vec3.h"
 #include "support/shapes.h"
 
 namespace {
@@ -30,7 +31,9 @@ Vec3 centre(const Mesh& mesh, size_t t) {
     return c;
 }
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using fabvdb::test::dot;
+using fabvdb::test::norm;
+using fabvdb::test::sub;
 
 //! Per pair of triangles sharing an edge (smaller index first), the edge's length.
 std::map<std::pair<uint32_t, uint32_t>, double> shared_edges(const Mesh& mesh) {
@@ -216,9 +219,8 @@ TEST(CavityPatches, OnASphereEveryGuaranteeHolds) {
         // Unit, and into the sphere: against the way from the middle to the patch.
         const Vec3& normal = patches.normal[p];
         EXPECT_NEAR(dot(normal, normal), 1.0, 1e-9);
-        Vec3 out{patches.centroid[p][0] - middle[0], patches.centroid[p][1] - middle[1],
-                 patches.centroid[p][2] - middle[2]};
-        const double r = std::sqrt(dot(out, out));
+        const Vec3 out = sub(patches.centroid[p], middle);
+        const double r = norm(out);
         EXPECT_LT(dot(normal, out) / r, -0.9) << "patch " << p;
         // The site is the centre of a patch triangle nearest its centroid (ties either way).
         double nearest = HUGE_VAL;

@@ -20,22 +20,13 @@
 #include "io/mesh_io.h"
 #include "support/decomposition_checks.h"
 #include "support/ray_cast.h"
+#include "support/shapes.h"
 
 namespace {
 
 std::string checked_path;
 std::vector<std::string> cast_paths;  // part, top, bottom
 fabvdb::Vec3 cast_direction{0, 0, 1};
-
-//! Six times the enclosed volume, by the divergence theorem.
-double six_volume(const fabvdb::Mesh& mesh) {
-    double sum = 0;
-    for (const fabvdb::Triangle& f : mesh.triangles) {
-        const fabvdb::Vec3 &a = mesh.vertices[f[0]], &b = mesh.vertices[f[1]], &c = mesh.vertices[f[2]];
-        sum += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-    }
-    return sum;
-}
 
 TEST(CastPart, PartAndMoldPiecesAreValidSolids) {
     if (cast_paths.empty()) GTEST_SKIP();
@@ -46,7 +37,7 @@ TEST(CastPart, PartAndMoldPiecesAreValidSolids) {
         EXPECT_TRUE(fabvdb::test::closed_two_manifold(mesh));
         EXPECT_FALSE(fabvdb::test::self_intersects(mesh));
         EXPECT_EQ(fabvdb::test::degenerate_triangle_count(fabvdb::test::stored_as_float(mesh)), 0u);
-        EXPECT_GT(six_volume(mesh), 0.0);
+        EXPECT_GT(fabvdb::test::mesh_volume(mesh), 0.0);
         if (i == 0) {
             const fabvdb::test::HeightFieldCheck field =
                 fabvdb::test::check_double_height_field(mesh, cast_direction, 60);

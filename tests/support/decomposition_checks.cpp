@@ -10,18 +10,14 @@
 #include <map>
 #include <set>
 
+#include "support/check_vec3.h"
+
 namespace fabvdb::test {
 
 namespace {
 
 using Point = std::array<double, 3>;
 using Face = std::array<uint32_t, 3>;
-
-Point sub(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Point crs(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dt(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 //! Number of connected pieces of `faces` joined across shared edges; the
 //! piece of each face in `piece_of` if given.
@@ -91,8 +87,8 @@ std::vector<double> check_decomposition(const nlohmann::json& doc) {
             EXPECT_EQ(owner[t], -1) << "triangle " << t << " in two parts";
             owner[t] = id;
             prisms.push_back(all[t]);
-            const Point c = crs(sub(corners[all[t][1]], corners[all[t][0]]), sub(corners[all[t][2]], corners[all[t][0]]));
-            area += 0.5 * std::sqrt(dt(c, c));
+            const Point c = cross(sub(corners[all[t][1]], corners[all[t][0]]), sub(corners[all[t][2]], corners[all[t][0]]));
+            area += 0.5 * norm(c);
         }
         areas.push_back(area);
         EXPECT_EQ(pieces(prisms), 1u) << "part " << id << " is not connected";
@@ -113,10 +109,10 @@ std::vector<double> check_decomposition(const nlohmann::json& doc) {
             (upper[i] ? top_in : bottom_in).insert(surface_piece[i]);
             if (kind[i] == 1) continue;  // inner triangles are invisible
             const Face& f = surface[i];
-            const Point c = crs(sub(corners[f[1]], corners[f[0]]), sub(corners[f[2]], corners[f[0]]));
-            const double twice = std::sqrt(dt(c, c));
+            const Point c = cross(sub(corners[f[1]], corners[f[0]]), sub(corners[f[2]], corners[f[0]]));
+            const double twice = norm(c);
             if (twice == 0) continue;
-            const double facing = dt(c, d) / twice * (upper[i] ? 1 : -1);
+            const double facing = dot(c, d) / twice * (upper[i] ? 1 : -1);
             const double theta = std::acos(std::max(-1.0, std::min(1.0, facing)));
             if (theta > M_PI / 2 - draft)
                 overhang += -std::cos(std::min(theta + draft, M_PI)) * 0.5 * twice * s * s * std::abs(facing);
@@ -141,7 +137,7 @@ BoundaryMeasure measure_boundaries(const nlohmann::json& doc) {
     for (const auto& [edge, parts] : sides) {
         if (parts.size() != 2 || parts[0] == parts[1]) continue;
         const Point e = sub(corners[edge.second], corners[edge.first]);
-        m.length += std::sqrt(dt(e, e));
+        m.length += norm(e);
         ends[edge.first].push_back(edge.second);
         ends[edge.second].push_back(edge.first);
     }
@@ -149,7 +145,7 @@ BoundaryMeasure measure_boundaries(const nlohmann::json& doc) {
         if (others.size() != 2) continue;
         const Point a = sub(corners[others[0]], corners[v]);
         const Point b = sub(corners[others[1]], corners[v]);
-        const double c = dt(a, b) / std::sqrt(dt(a, a) * dt(b, b));
+        const double c = dot(a, b) / std::sqrt(dot(a, a) * dot(b, b));
         m.turning += M_PI - std::acos(std::max(-1.0, std::min(1.0, c)));
         ++m.vertices;
     }

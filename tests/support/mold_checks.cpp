@@ -7,6 +7,7 @@
 #include <cmath>
 #include <queue>
 
+#include "support/check_vec3.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 
@@ -14,21 +15,15 @@ namespace fabvdb::test {
 
 namespace {
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 struct Frame {
     Vec3 u, v, w;
 };
 Frame frame_of(const Vec3& d) {
     Frame f;
-    const double n = std::sqrt(dot(d, d));
-    f.w = {d[0] / n, d[1] / n, d[2] / n};
+    f.w = unit(d);
     const Vec3 helper = std::abs(f.w[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-    Vec3 u{helper[1] * f.w[2] - helper[2] * f.w[1], helper[2] * f.w[0] - helper[0] * f.w[2],
-           helper[0] * f.w[1] - helper[1] * f.w[0]};
-    const double m = std::sqrt(dot(u, u));
-    f.u = {u[0] / m, u[1] / m, u[2] / m};
-    f.v = {f.w[1] * f.u[2] - f.w[2] * f.u[1], f.w[2] * f.u[0] - f.w[0] * f.u[2], f.w[0] * f.u[1] - f.w[1] * f.u[0]};
+    f.u = unit(cross(helper, f.w));
+    f.v = cross(f.w, f.u);
     return f;
 }
 
@@ -76,9 +71,8 @@ Frame block_frame(const Mesh& piece, const Vec3& d) {
     std::vector<double> weight(360, 0.0), largest(360, 0.0), angle_of_largest(360, 0.0);
     for (const auto& t : piece.triangles) {
         const Vec3 &a = piece.vertices[t[0]], &b = piece.vertices[t[1]], &c = piece.vertices[t[2]];
-        const Vec3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const Vec3 n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-        const double area2 = std::sqrt(dot(n, n));
+        const Vec3 n = cross(sub(b, a), sub(c, a));
+        const double area2 = norm(n);
         if (area2 == 0 || std::abs(dot(n, f.w)) > 1e-6 * area2) continue;
         // Mod 90°, in [-45°, 45°): a face a hair off an axis either way (the
         // float coordinates of a tilted block) lands in one bin.

@@ -2,6 +2,7 @@
 #include "support/shapes.h"
 
 #include "core/icosphere.h"
+#include "support/check_vec3.h"
 
 #include <cmath>
 
@@ -91,8 +92,7 @@ double mesh_volume(const Mesh& mesh) {
         const Vec3& a = mesh.vertices[t[0]];
         const Vec3& b = mesh.vertices[t[1]];
         const Vec3& c = mesh.vertices[t[2]];
-        six_volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                      a[2] * (b[0] * c[1] - b[1] * c[0]);
+        six_volume += dot(a, cross(b, c));
     }
     return six_volume / 6.0;
 }

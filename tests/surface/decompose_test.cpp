@@ -16,6 +16,7 @@
 #include "io/mesh_io.h"
 #include "surface/decompose.h"
 #include "surface/decomposition_io.h"
+#include "support/check_vec3.h"
 #include "support/decomposition_checks.h"
 #include "support/shapes.h"
 
@@ -55,8 +56,10 @@ Written run_and_read(const std::string& mesh_name, const std::string& folder, in
     return run_and_read_mesh(input, folder, smoothing_iterations);
 }
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dt(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using fabvdb::test::cross;
+using fabvdb::test::dot;
+using fabvdb::test::norm;
+using fabvdb::test::sub;
 
 std::vector<double> check_decomposition(const Written& w) { return fabvdb::test::check_decomposition(w.doc); }
 
@@ -77,13 +80,13 @@ TEST(Decompose, SphereSplitsInTwoHalvesNearAGreatCircle) {
     for (uint32_t t : part["prisms"].get<std::vector<uint32_t>>())
         for (int k = 0; k < 3; ++k)
             for (int j = 0; j < 3; ++j) mean[k] += w.corners[all[t][j]][k] - centre[k];
-    const double length = std::sqrt(dt(mean, mean));
-    const double radius = std::sqrt(dt(sub(w.corners[0], centre), sub(w.corners[0], centre)));
+    const double length = norm(mean);
+    const double radius = norm(sub(w.corners[0], centre));
     size_t points = 0;
     for (const json& line : part["boundaries"])
         for (const json& p : line) {
             const Vec3 q = sub(p.get<Vec3>(), centre);
-            EXPECT_LT(std::abs(dt(q, mean) / length), 0.3 * radius);
+            EXPECT_LT(std::abs(dot(q, mean) / length), 0.3 * radius);
             ++points;
         }
     EXPECT_GT(points, 10u);
@@ -167,12 +170,12 @@ TEST(Decompose, SmoothingStraightensBoundariesKeepingPartsAndEnergy) {
         for (const auto& f : faces) {
             const Vec3 a = rough.corners[f[0]], b = rough.corners[f[1]], c = rough.corners[f[2]];
             const Vec3 ab = sub(b, a), ac = sub(c, a);
-            const Vec3 n{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+            const Vec3 n = cross(ab, ac);
             const Vec3 centre{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3};
-            const double reach = std::sqrt(std::max({dt(sub(a, centre), sub(a, centre)), dt(sub(b, centre), sub(b, centre)),
-                                                     dt(sub(c, centre), sub(c, centre))}));
-            if (dt(sub(p, centre), sub(p, centre)) > reach * reach * 1.0001) continue;
-            nearest = std::min(nearest, std::abs(dt(sub(p, a), n)) / std::sqrt(dt(n, n)));
+            const double reach = std::sqrt(std::max({dot(sub(a, centre), sub(a, centre)), dot(sub(b, centre), sub(b, centre)),
+                                                     dot(sub(c, centre), sub(c, centre))}));
+            if (dot(sub(p, centre), sub(p, centre)) > reach * reach * 1.0001) continue;
+            nearest = std::min(nearest, std::abs(dot(sub(p, a), n)) / norm(n));
         }
         EXPECT_LT(nearest, 1e-6 * omega + 1e-9) << "vertex " << v << " left the surface";
     }

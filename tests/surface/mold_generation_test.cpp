@@ -11,6 +11,7 @@
 #include <openvdb/openvdb.h>
 
 #include "core/error.h"
+#include "support/check_vec3.h"
 #include "support/mold_checks.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
@@ -26,8 +27,10 @@ using fabvdb::Vec3;
 
 const double voxel = 0.7;  // mm, for a sphere of radius 20 mm
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using fabvdb::test::cross;
+using fabvdb::test::dot;
+using fabvdb::test::norm;
+using fabvdb::test::sub;
 
 // Distance from p to triangle abc: inside the prism over it, to its plane;
 // otherwise to the nearest edge.
@@ -36,10 +39,10 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
         const Vec3 d = sub(e, s);
         const double t = std::clamp(dot(sub(p, s), d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
         const Vec3 q{s[0] + t * d[0] - p[0], s[1] + t * d[1] - p[1], s[2] + t * d[2] - p[2]};
-        return std::sqrt(dot(q, q));
+        return norm(q);
     };
     const Vec3 u = sub(b, a), v = sub(c, a);
-    const Vec3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const Vec3 n = cross(u, v);
     const double nn = dot(n, n);
     if (nn > 0) {
         const double height = dot(sub(p, a), n) / nn;

@@ -13,6 +13,7 @@
 #include <map>
 #include <utility>
 
+#include "support/check_vec3.h"
 #include "support/shapes.h"
 #include "surface/shell.h"
 
@@ -53,8 +54,7 @@ double volume(const Shell& shell, const PartSurface& s) {
     for (const auto& c : s.corners) {
         const Vec3 &a = corner_position(shell, c[0]), &b = corner_position(shell, c[1]),
                    &d = corner_position(shell, c[2]);
-        six += a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
-               a[2] * (b[0] * d[1] - b[1] * d[0]);
+        six += test::dot(a, test::cross(b, d));
     }
     return six / 6.0;
 }

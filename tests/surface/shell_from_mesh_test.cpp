@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "shell_shapes.h"
+#include "support/check_vec3.h"
 #include "surface/shell_from_mesh.h"
 
 namespace {
@@ -21,7 +22,8 @@ using fabvdb::Vec3;
 using fabvdb::surface::Shell;
 using fabvdb::volume::LowResShellOptions;
 
-double length(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+using fabvdb::test::dot;
+using fabvdb::test::norm;
 
 Shell shell_of_mesh(const fabvdb::Mesh& mesh, const LowResShellOptions& options, nlohmann::json* stats) {
     fabvdb::Progress progress;
@@ -65,16 +67,16 @@ TEST(ShellFromMesh, SphereShellLiesOnTheSphereWithInnerVerticesOmegaDeep) {
     EXPECT_LT(shell.triangle_count(), 8000u);
     ASSERT_EQ(shell.inner.size(), shell.outer.vertices.size());
     for (size_t v = 0; v < shell.outer.vertices.size(); ++v) {
-        EXPECT_NEAR(length(shell.outer.vertices[v]), radius, 0.5 * voxel) << "vertex " << v;
-        EXPECT_NEAR(length(shell.inner[v]), radius - 2.0, voxel) << "inner vertex " << v;
+        EXPECT_NEAR(norm(shell.outer.vertices[v]), radius, 0.5 * voxel) << "vertex " << v;
+        EXPECT_NEAR(norm(shell.inner[v]), radius - 2.0, voxel) << "inner vertex " << v;
     }
     // Outward unit normals; unit-cube areas of a sphere of diameter ~40.
     double area = 0;
     for (size_t t = 0; t < shell.triangle_count(); ++t) {
         const Vec3& n = shell.normal[t];
-        EXPECT_NEAR(length(n), 1.0, 1e-9);
+        EXPECT_NEAR(norm(n), 1.0, 1e-9);
         const Vec3& p = shell.outer.vertices[shell.outer.triangles[t][0]];
-        EXPECT_GT(n[0] * p[0] + n[1] * p[1] + n[2] * p[2], 0.9 * radius) << "triangle " << t;
+        EXPECT_GT(dot(n, p), 0.9 * radius) << "triangle " << t;
         area += shell.area[t];
         for (int u : shell.neighbor[t]) EXPECT_GE(u, 0);
     }

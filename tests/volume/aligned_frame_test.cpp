@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "support/check_vec3.h"
 #include "support/shapes.h"
 #include "volume/aligned_frame.h"
 
@@ -19,7 +20,8 @@ using fabvdb::Vec3;
 using fabvdb::volume::aligned_frame;
 using fabvdb::volume::AlignedFrame;
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using fabvdb::test::cross;
+using fabvdb::test::dot;
 
 void expect_near(const Vec3& actual, const Vec3& expected, double tolerance) {
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(actual[k], expected[k], tolerance) << "coordinate " << k;
@@ -37,10 +39,8 @@ void check_frame(const Vec3& direction, int least) {
     EXPECT_NEAR(dot(frame.e1, frame.e2), 0.0, 1e-15);
     EXPECT_NEAR(dot(frame.e1, frame.d), 0.0, 1e-15);
     EXPECT_NEAR(dot(frame.e2, frame.d), 0.0, 1e-15);
-    // Right-handed: e1 x e2 = d, written out.
-    const Vec3& a = frame.e1;
-    const Vec3& b = frame.e2;
-    expect_near({a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}, frame.d, 1e-15);
+    // Right-handed: e1 x e2 = d.
+    expect_near(cross(frame.e1, frame.e2), frame.d, 1e-15);
     EXPECT_EQ(frame.e1[least], 0.0);
 }
 

@@ -24,6 +24,7 @@
 #include "core/error.h"
 #include "io/mesh_io.h"
 #include "support/shapes.h"
+#include "support/winding_number.h"
 #include "volume/clean_solid.h"
 
 namespace fabvdb::volume {
@@ -53,26 +54,6 @@ std::vector<Triangle3> triangles_of(const Mesh& mesh) {
     return triangles;
 }
 
-//! The generalized winding number of `mesh` at p: the solid angles of its
-//! triangles seen from p (Van Oosterom and Strackee) over 4π.
-double winding_number(const Mesh& mesh, const Vec3& p) {
-    double sum = 0.0;
-    for (const Triangle& t : mesh.triangles) {
-        Vec3 r[3];
-        double length[3];
-        for (int k = 0; k < 3; ++k) {
-            for (int i = 0; i < 3; ++i) r[k][i] = mesh.vertices[t[k]][i] - p[i];
-            length[k] = std::sqrt(r[k][0] * r[k][0] + r[k][1] * r[k][1] + r[k][2] * r[k][2]);
-        }
-        const auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-        const Vec3 cross = {r[1][1] * r[2][2] - r[1][2] * r[2][1], r[1][2] * r[2][0] - r[1][0] * r[2][2],
-                            r[1][0] * r[2][1] - r[1][1] * r[2][0]};
-        sum += 2.0 * std::atan2(dot(r[0], cross), length[0] * length[1] * length[2] + dot(r[0], r[1]) * length[2] +
-                                                      dot(r[1], r[2]) * length[0] + dot(r[2], r[0]) * length[1]);
-    }
-    return sum / (4.0 * M_PI);
-}
-
 //! The input's winding number just in front of and just behind triangle t
 //! of `mesh`, at its centre, a millionth of its inradius away (a sheet that
 //! crosses its plane only along its sides, at any angle above a
@@ -90,7 +71,7 @@ std::pair<double, double> sides(const Mesh& input, const Mesh& mesh, const Trian
     const double step = 1e-6 * (twice_area / perimeter) / twice_area;
     Vec3 front, back;
     for (int i = 0; i < 3; ++i) front[i] = centre[i] + step * normal[i], back[i] = centre[i] - step * normal[i];
-    return {winding_number(input, front), winding_number(input, back)};
+    return {test::winding_number(input, front), test::winding_number(input, back)};
 }
 
 // dragon_20k is closed and manifold, but folds through itself in places (20
@@ -176,7 +157,7 @@ TEST(ResolveCrossings, DragonKeepsItsSurfaceWithoutTheFolds) {
                 }
                 if (output_tree.squared_distance(point(p)) <= 1e-12 * scale * scale) continue;
                 ++dropped;
-                const double w_front = winding_number(dragon, front), w_back = winding_number(dragon, back);
+                const double w_front = test::winding_number(dragon, front), w_back = test::winding_number(dragon, back);
                 EXPECT_NEAR(w_back - w_front, 1.0, 0.1);
                 EXPECT_GT(std::abs(w_front), 0.9) << "a dropped input point on the boundary";
             }

@@ -14,6 +14,7 @@
 #include <openvdb/tools/LevelSetSphere.h>
 
 #include "core/error.h"
+#include "support/check_vec3.h"
 #include "support/plain_level_set.h"
 #include "support/shapes.h"
 
@@ -35,10 +36,7 @@ double distance(const Vec3& a, const Vec3& b) { return std::sqrt(squared_distanc
 
 // How far p lies off the line through the centre and q.
 double off_radius(const Vec3& p, const Vec3& q) {
-    const Vec3 a = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
-    const Vec3 b = {q[0] - centre[0], q[1] - centre[1], q[2] - centre[2]};
-    const Vec3 c = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    return std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / distance(q, centre);
+    return test::norm(test::cross(test::sub(p, centre), test::sub(q, centre))) / distance(q, centre);
 }
 
 TEST(ShellPrisms, SphereInnerEndsLieThicknessBelowAlongTheRadius) {

@@ -17,6 +17,7 @@
 #include <openvdb/tools/Composite.h>
 
 #include "core/error.h"
+#include "support/check_vec3.h"
 #include "support/plain_level_set.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
@@ -29,11 +30,7 @@ namespace {
 using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::test::plain_level_set;
-
-Vec3 normalized(const Vec3& v) {
-    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    return {v[0] / n, v[1] / n, v[2] / n};
-}
+using fabvdb::test::unit;
 
 class Sweep : public ::testing::TestWithParam<Vec3> {
 protected:
@@ -41,7 +38,7 @@ protected:
 };
 
 TEST_P(Sweep, RingBecomesDoubleHeightFieldContainingIt) {
-    const Vec3 d = normalized(GetParam());
+    const Vec3 d = unit(GetParam());
     const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
     // Premise: the ring is not a double height field along d.
     EXPECT_GT(fabvdb::test::check_double_height_field(ring, d, 40).lines_over_two, 10u);
@@ -234,7 +231,7 @@ TEST(SweepTrim, GivenUpEdgesOfAThickRingAreFilledAgain) {
     openvdb::initialize();
     const double voxel = 0.4, minor = 4.0;
     const Mesh ring = fabvdb::test::make_standing_torus(10.0, minor, 48, 24);
-    const Vec3 d = normalized({0.0, 0.2, 1.0});
+    const Vec3 d = unit({0.0, 0.2, 1.0});
     fabvdb::Progress progress;
     const auto input = plain_level_set(ring, voxel);
     fabvdb::volume::SweepOptions trimming;
