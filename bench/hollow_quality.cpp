@@ -8,11 +8,6 @@
 // wall_min wall_median outer_deviation_max outer_deviation_mean (mm).
 // bench_hollow_quality --scaled INPUT FIT_MM OUT writes the input scaled that
 // way instead (one file both slicers read).
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,20 +17,15 @@
 
 #include "core/error.h"
 #include "io/mesh_io.h"
+#include "support/cgal_mesh.h"
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Triangle3 = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-Point point(const fabvdb::Vec3& p) { return Point(p[0], p[1], p[2]); }
-
-Triangle3 triangle(const fabvdb::Mesh& mesh, const fabvdb::Triangle& t) {
-    return Triangle3(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]), point(mesh.vertices[t[2]]));
-}
+using fabvdb::test::cgal::Point;
+using fabvdb::test::cgal::point;
+using fabvdb::test::cgal::Tree;
+using fabvdb::test::cgal::triangle;
+using fabvdb::test::cgal::Triangle3;
 
 //! Scales `mesh` like `fabvdb --fit fit_mm`: its longest side becomes fit_mm.
 void fit(fabvdb::Mesh& mesh, double fit_mm) {
@@ -97,8 +87,7 @@ int main(int argc, char** argv) {
         }
         std::sort(wall.begin(), wall.end());
 
-        std::vector<Triangle3> input_triangles;
-        for (const auto& t : input.triangles) input_triangles.push_back(triangle(input, t));
+        const std::vector<Triangle3> input_triangles = fabvdb::test::cgal::triangles_of(input);
         Tree input_tree(input_triangles.begin(), input_triangles.end());
         input_tree.accelerate_distance_queries();
         std::sort(outer_vertices.begin(), outer_vertices.end());

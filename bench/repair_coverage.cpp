@@ -18,23 +18,16 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include "io/mesh_io.h"
+#include "support/cgal_mesh.h"
 #include "volume/repair.h"
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Triangle3 = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-Point point(const fabvdb::Vec3& v) { return Point(v[0], v[1], v[2]); }
+using fabvdb::test::cgal::Point;
+using fabvdb::test::cgal::point;
+using fabvdb::test::cgal::Tree;
+using fabvdb::test::cgal::Triangle3;
 
 std::vector<Point> samples(const fabvdb::Mesh& mesh) {
     std::vector<Point> points;
@@ -75,10 +68,7 @@ int main(int argc, char** argv) {
         fabvdb::volume::RepairOptions options;
         options.distance.voxel_size = fabvdb::volume::voxel_size_for_resolution(input, resolution, argv[1]);
         const fabvdb::volume::RepairResult result = fabvdb::volume::repair(input, options, progress);
-        std::vector<Triangle3> triangles;
-        for (const auto& t : result.mesh.triangles)
-            triangles.emplace_back(point(result.mesh.vertices[t[0]]), point(result.mesh.vertices[t[1]]),
-                                   point(result.mesh.vertices[t[2]]));
+        const std::vector<Triangle3> triangles = fabvdb::test::cgal::triangles_of(result.mesh);
         Tree tree(triangles.begin(), triangles.end());
         tree.accelerate_distance_queries();
         std::vector<double> distance(points.size());

@@ -8,10 +8,9 @@
 #include <set>
 #include <utility>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 
+#include "support/cgal_mesh.h"
 #include "support/check_vec3.h"
 
 namespace fabvdb::test {
@@ -149,14 +148,9 @@ bool closed_two_manifold(const Mesh& mesh) {
 }
 
 bool self_intersects(const Mesh& mesh) {
-    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-    CGAL::Surface_mesh<Kernel::Point_3> surface;
-    std::vector<CGAL::Surface_mesh<Kernel::Point_3>::Vertex_index> handles;
-    for (const Vec3& p : mesh.vertices) handles.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
-    for (const auto& t : mesh.triangles)
-        if (surface.add_face(handles[t[0]], handles[t[1]], handles[t[2]]) ==
-            CGAL::Surface_mesh<Kernel::Point_3>::null_face())
-            return true;  // not a valid surface: treated as a failure by the caller's other checks too
+    bool valid = false;
+    const cgal::SurfaceMesh surface = cgal::surface_mesh_of(mesh, &valid);
+    if (!valid) return true;  // not a valid surface: treated as a failure by the caller's other checks too
     return CGAL::Polygon_mesh_processing::does_self_intersect(surface);
 }
 

@@ -5,14 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <atomic>
@@ -25,17 +20,17 @@
 
 #include "core/error.h"
 #include "io/mesh_io.h"
+#include "support/cgal_mesh.h"
 #include "support/shapes.h"
 
 namespace fabvdb::volume {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
-using Triangle3 = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+using test::cgal::Kernel;
+using test::cgal::Point;
+using test::cgal::SurfaceMesh;
+using test::cgal::Tree;
+using test::cgal::Triangle3;
 
 //! The output split by component: outer shells (positive volume), cavity
 //! shells (negative), each as CGAL triangles; plus whether it is one closed,
@@ -50,12 +45,7 @@ struct Inspected {
 
 Inspected inspect(const Mesh& mesh) {
     Inspected result;
-    SurfaceMesh surface;
-    std::vector<SurfaceMesh::Vertex_index> vertex;
-    for (const Vec3& p : mesh.vertices) vertex.push_back(surface.add_vertex(Point(p[0], p[1], p[2])));
-    for (const Triangle& t : mesh.triangles)
-        if (surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) == SurfaceMesh::null_face())
-            result.manifold = false;
+    SurfaceMesh surface = test::cgal::surface_mesh_of(mesh, &result.manifold);
     if (!result.manifold) return result;
     result.closed = CGAL::is_closed(surface);
     result.self_intersecting = CGAL::Polygon_mesh_processing::does_self_intersect(surface);
@@ -235,14 +225,8 @@ void expect_union_surface(const Mesh& a, const Mesh& b, const std::vector<Triang
     Shell shells[2];
     for (int s = 0; s < 2; ++s) {
         const Mesh& mesh = s == 0 ? a : b;
-        std::vector<SurfaceMesh::Vertex_index> vertex;
-        for (const Vec3& p : mesh.vertices) vertex.push_back(shells[s].surface.add_vertex(Point(p[0], p[1], p[2])));
-        for (const Triangle& t : mesh.triangles) {
-            shells[s].surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
-            shells[s].triangles.emplace_back(Point(mesh.vertices[t[0]][0], mesh.vertices[t[0]][1], mesh.vertices[t[0]][2]),
-                                             Point(mesh.vertices[t[1]][0], mesh.vertices[t[1]][1], mesh.vertices[t[1]][2]),
-                                             Point(mesh.vertices[t[2]][0], mesh.vertices[t[2]][1], mesh.vertices[t[2]][2]));
-        }
+        shells[s].surface = test::cgal::surface_mesh_of(mesh);
+        shells[s].triangles = test::cgal::triangles_of(mesh);
         shells[s].tree = std::make_unique<Tree>(shells[s].triangles.begin(), shells[s].triangles.end());
         shells[s].tree->accelerate_distance_queries();
         shells[s].side = std::make_unique<Side>(shells[s].surface);

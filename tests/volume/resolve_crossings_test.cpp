@@ -7,13 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -23,6 +18,7 @@
 
 #include "core/error.h"
 #include "io/mesh_io.h"
+#include "support/cgal_mesh.h"
 #include "support/shapes.h"
 #include "support/winding_number.h"
 #include "volume/clean_solid.h"
@@ -30,29 +26,11 @@
 namespace fabvdb::volume {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
-using Triangle3 = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-Point point(const Vec3& p) { return Point(p[0], p[1], p[2]); }
-
-SurfaceMesh surface_of(const Mesh& mesh) {
-    SurfaceMesh surface;
-    std::vector<SurfaceMesh::Vertex_index> vertex;
-    for (const Vec3& p : mesh.vertices) vertex.push_back(surface.add_vertex(point(p)));
-    for (const Triangle& t : mesh.triangles) surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
-    return surface;
-}
-
-std::vector<Triangle3> triangles_of(const Mesh& mesh) {
-    std::vector<Triangle3> triangles;
-    for (const Triangle& t : mesh.triangles)
-        triangles.emplace_back(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]), point(mesh.vertices[t[2]]));
-    return triangles;
-}
+using test::cgal::point;
+using test::cgal::SurfaceMesh;
+using test::cgal::Tree;
+using test::cgal::Triangle3;
+using test::cgal::triangles_of;
 
 //! The input's winding number just in front of and just behind triangle t
 //! of `mesh`, at its centre, a millionth of its inradius away (a sheet that
@@ -89,7 +67,7 @@ TEST(ResolveCrossings, DragonKeepsItsSurfaceWithoutTheFolds) {
     const std::optional<Mesh> resolved = resolve_crossings(dragon, check.crossings, progress);
     ASSERT_TRUE(resolved.has_value());
 
-    SurfaceMesh surface = surface_of(*resolved);
+    SurfaceMesh surface = test::cgal::surface_mesh_of(*resolved);
     EXPECT_TRUE(CGAL::is_closed(surface));
     EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(surface));
     const double scale = bounding_box(dragon).diagonal();

@@ -5,12 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <atomic>
@@ -18,17 +13,17 @@
 
 #include "core/error.h"
 #include "io/mesh_io.h"
+#include "support/cgal_mesh.h"
 #include "support/shapes.h"
 
 namespace fabvdb::volume {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Triangle3 = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using test::cgal::Kernel;
+using test::cgal::Point;
+using test::cgal::SurfaceMesh;
+using test::cgal::Tree;
+using test::cgal::Triangle3;
 
 struct Figures {
     size_t voxels = 0, band_voxels = 0, wrong_sign = 0;
@@ -40,20 +35,10 @@ struct Figures {
 };
 
 Figures measure(const Mesh& mesh, const SolidDistance& solid, double voxel) {
-    std::vector<Triangle3> triangles;
-    for (const Triangle& t : mesh.triangles) {
-        const auto p = [&](int k) {
-            const Vec3& v = mesh.vertices[t[k]];
-            return Point(v[0], v[1], v[2]);
-        };
-        triangles.emplace_back(p(0), p(1), p(2));
-    }
+    const std::vector<Triangle3> triangles = test::cgal::triangles_of(mesh);
     Tree tree(triangles.begin(), triangles.end());
     tree.accelerate_distance_queries();
-    SurfaceMesh surface;
-    std::vector<SurfaceMesh::Vertex_index> vertex;
-    for (const Vec3& v : mesh.vertices) vertex.push_back(surface.add_vertex(Point(v[0], v[1], v[2])));
-    for (const Triangle& t : mesh.triangles) surface.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]);
+    const SurfaceMesh surface = test::cgal::surface_mesh_of(mesh);
     const CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel> side(surface);
 
     Figures figures;

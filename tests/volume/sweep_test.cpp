@@ -10,13 +10,10 @@
 #include <string>
 #include <vector>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <openvdb/tools/Composite.h>
 
 #include "core/error.h"
+#include "support/cgal_mesh.h"
 #include "support/check_vec3.h"
 #include "support/plain_level_set.h"
 #include "support/ray_cast.h"
@@ -31,6 +28,7 @@ using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::test::plain_level_set;
 using fabvdb::test::unit;
+namespace cgal = fabvdb::test::cgal;
 
 class Sweep : public ::testing::TestWithParam<Vec3> {
 protected:
@@ -176,21 +174,12 @@ TEST(SweepTrim, SlotUnderTheTopIsHalfTrimmedHalfFilled) {
     face(2, slot_floor, slot_back, hi[0], -slot_y, slot_y, none);
     face(2, slot_ceiling, slot_back, hi[0], -slot_y, slot_y, none);
 
-    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-    using Triangle3 = Kernel::Triangle_3;
-    using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
     const auto max_distance = [&](const Mesh& mesh) {
-        std::vector<Triangle3> triangles;
-        const auto point = [&](uint32_t v) {
-            return Kernel::Point_3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]);
-        };
-        for (const auto& t : mesh.triangles) triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
-        Tree tree(triangles.begin(), triangles.end());
+        const std::vector<cgal::Triangle3> triangles = cgal::triangles_of(mesh);
+        cgal::Tree tree(triangles.begin(), triangles.end());
         tree.accelerate_distance_queries();
         double worst = 0;
-        for (const Vec3& p : samples)
-            worst = std::max(worst, std::sqrt(tree.squared_distance(Kernel::Point_3(p[0], p[1], p[2]))));
+        for (const Vec3& p : samples) worst = std::max(worst, std::sqrt(tree.squared_distance(cgal::point(p))));
         return worst;
     };
     const double slot_depth = hi[0] - slot_back;
@@ -245,19 +234,12 @@ TEST(SweepTrim, GivenUpEdgesOfAThickRingAreFilledAgain) {
     EXPECT_GT(check.lines, 1000u);
     EXPECT_EQ(check.lines_over_two, 0u) << "max crossings " << check.max_crossings;
 
-    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-    using Triangle3 = Kernel::Triangle_3;
-    using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle3>::const_iterator>;
-    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-    std::vector<Triangle3> triangles;
-    const auto point = [&](const Vec3& p) { return Kernel::Point_3(p[0], p[1], p[2]); };
-    for (const auto& t : part.triangles)
-        triangles.emplace_back(point(part.vertices[t[0]]), point(part.vertices[t[1]]), point(part.vertices[t[2]]));
-    Tree tree(triangles.begin(), triangles.end());
+    const std::vector<cgal::Triangle3> triangles = cgal::triangles_of(part);
+    cgal::Tree tree(triangles.begin(), triangles.end());
     tree.accelerate_distance_queries();
     double worst = 0;
     for (const Vec3& p : fabvdb::test::make_standing_torus(10.0, minor, 384, 192).vertices)
-        worst = std::max(worst, std::sqrt(tree.squared_distance(point(p))));
+        worst = std::max(worst, std::sqrt(tree.squared_distance(cgal::point(p))));
     RecordProperty("worst_mm", std::to_string(worst));
     EXPECT_LT(worst, 3.25 * voxel);
 }
