@@ -375,6 +375,8 @@ def process_model(row, args, runner, with_mold):
     else:
         fig = "%d parts, input to parts max %s%% / mean %s%% of the diagonal" % (
             len(parts), fmt(100 * cover["max_ratio"]), fmt(100 * cover["mean_ratio"]))
+        if cover.get("enclosed_samples"):
+            fig += " (%d enclosed input samples left out)" % cover["enclosed_samples"]
         if cover["max_ratio"] > MOLD_MAX_RATIO or cover["mean_ratio"] > MOLD_MEAN_RATIO:
             problems.append("not faithful: " + fig)
     if problems:
