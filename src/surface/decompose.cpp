@@ -10,6 +10,7 @@
 #include "core/stage_clock.h"
 #include "surface/boundary_smoothing.h"
 #include "surface/shell_from_mesh.h"
+#include "surface/undercut_depth.h"
 
 namespace fabvdb::surface {
 
@@ -66,15 +67,24 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
     report["total_moldability_energy"] = energy;
     report["under_gamma"] = energy < settings.decomposition.gamma;
     report["parts"] = nlohmann::json::array();
+    const double depth_bound = settings.decomposition.max_undercut_depth / result.shell.unit_scale;
+    double deepest = 0;
     for (size_t p = 0; p < d.parts.size(); ++p) {
         double area = 0;
         for (size_t i = 0; i < d.parts[p].surface.size(); ++i)
             if (d.parts[p].surface.kind[i] == PartSurface::outer) area += d.parts[p].surface.area[i];
+        const Vec3& direction = result.terms.directions.directions[d.parts[p].direction];
+        const UndercutDepth undercut = undercut_depth(result.shell, d.part_of_triangle, int(p), direction,
+                                                      undercut_line_spacing(result.shell),
+                                                      undercut_reach(result.shell, settings.decomposition));
+        deepest = std::max(deepest, undercut.depth);
         report["parts"].push_back({{"id", p},
-                                   {"parting_direction", result.terms.directions.directions[d.parts[p].direction]},
+                                   {"parting_direction", direction},
                                    {"moldability_energy", d.parts[p].energy.total},
-                                   {"area", area / (result.shell.unit_scale * result.shell.unit_scale)}});
+                                   {"area", area / (result.shell.unit_scale * result.shell.unit_scale)},
+                                   {"undercut_depth", undercut.depth}});
     }
+    report["undercut_depth"] = deepest;
     report["timings"] = timings;
     report["timings"]["precompute_per_direction"] =
         timings["precompute_directions"] / double(result.terms.directions.directions.size());
@@ -83,6 +93,11 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
     if (all_thin)
         report["warnings"].push_back("the part is thinner than twice the shell thickness everywhere (one thin "
                                      "feature): its parts are cast solid, as with --solid");
+    if (deepest > depth_bound)
+        report["warnings"].push_back("an undercut " + std::to_string(deepest) + " mm deep along its part's parting "
+                                     "direction is over the bound " + std::to_string(depth_bound) +
+                                     " mm: the mold fills or trims it, leaving the input up to about half of it "
+                                     "from the cast part");
     if (!(energy < settings.decomposition.gamma))
         report["warnings"].push_back("the total moldability energy " + std::to_string(energy) +
                                      " is not under gamma " + std::to_string(settings.decomposition.gamma));

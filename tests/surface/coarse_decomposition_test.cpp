@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <set>
 
 #include "core/error.h"
@@ -105,6 +106,31 @@ TEST(CoarseDecomposition, UnreachableGammaTriesUpToTheCapAndKeepsTheLeastEnergy)
     for (const auto& record : run.log) least = std::min(least, record.at("moldability_energy").get<double>());
     EXPECT_DOUBLE_EQ(run.decomposition.total_energy(), least);
     expect_valid(shell, run.decomposition);
+}
+
+TEST(CoarseDecomposition, UndercutsOverTheBoundAddPartsAndKeepTheShallowest) {
+    // No decomposition meets a negative bound: past the first attempt under γ
+    // (the first: γ is huge) depth_attempts more are made, and the shallowest
+    // is kept (the first on a tie).
+    const Shell shell = fabvdb::test::shell_of(fabvdb::test::make_torus({0, 0, 0}, 20.0, 6.0, 24, 12), 1.0);
+    DecompositionOptions options;
+    options.gamma = 1e9;
+    options.max_undercut_depth = -1;
+    options.depth_attempts = 2;
+    const DecompositionRun run = decompose(shell, options);
+    EXPECT_EQ(logged_part_counts(run.log), (std::vector<int>{2, 3, 4}));
+    double least = 1e300;
+    for (const auto& record : run.log) least = std::min(least, record.at("undercut_depth").get<double>());
+    fabvdb::Progress progress;
+    const MoldabilityTerms terms = fabvdb::surface::compute_moldability_terms(shell, 0.0, progress);
+    EXPECT_DOUBLE_EQ(fabvdb::surface::deepest_undercut(shell, terms, run.decomposition,
+                                                          fabvdb::surface::undercut_reach(shell, options)),
+                     least);
+    expect_valid(shell, run.decomposition);
+
+    // Without a bound the first attempt under γ ends the search.
+    options.max_undercut_depth = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(logged_part_counts(decompose(shell, options).log), std::vector<int>{2});
 }
 
 TEST(CoarseDecomposition, RequestedCountIsTheOnlyAttempt) {
