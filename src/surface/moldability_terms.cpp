@@ -1,12 +1,15 @@
 //! Per-axis projected overlaps: project the outer triangles on the plane
 //! normal to the axis, bin their 2-D boxes in a uniform grid, test each box
 //! pair once (in the cell holding the lower corner of the boxes' overlap) and
-//! clip the two triangles to measure the shared area.
+//! clip the two triangles to measure the shared area. An update of a few
+//! moved triangles tests bounding spheres instead of projecting every
+//! triangle, and shifts the pair lists in place.
 #include "surface/moldability_terms.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 
 #include <tbb/parallel_for.h>
 
@@ -94,8 +97,8 @@ struct Change {
 };
 
 //! The overlaps along `axis`. With a `change`, only the pairs of a changed
-//! triangle are measured again; the previous pairs of unchanged triangles
-//! are kept.
+//! triangle are measured again (through the grid); the previous pairs of
+//! unchanged triangles are kept.
 MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& axis, const Change* change) {
     const size_t n = shell.triangle_count();
     const auto [u, v] = projection_basis(axis);
@@ -159,24 +162,7 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
             cell_of(std::max(boxes[a].lo[1], boxes[b].lo[1]), 1) == j)
             measure(a, b);
     };
-    // A change of a few triangles (an edit's, a smoothing step's) skips the
-    // grid: each box against those that meet the changed boxes' hull.
-    constexpr size_t few = 64;
-    if (change && change->triangles.size() <= few) {
-        Box2 hull{{1e300, 1e300}, {-1e300, -1e300}};
-        for (uint32_t a : change->triangles)
-            for (int k = 0; k < 2; ++k) {
-                hull.lo[k] = std::min(hull.lo[k], boxes[a].lo[k]);
-                hull.hi[k] = std::max(hull.hi[k], boxes[a].hi[k]);
-            }
-        for (uint32_t b = 0; b < n; ++b) {
-            if (!usable[b] || boxes[b].lo[0] > hull.hi[0] || boxes[b].hi[0] < hull.lo[0] ||
-                boxes[b].lo[1] > hull.hi[1] || boxes[b].hi[1] < hull.lo[1])
-                continue;
-            for (uint32_t a : change->triangles)
-                if (usable[a] && a != b && !(change->flag[b] && b < a) && boxes_meet(a, b)) measure(a, b);
-        }
-    } else {
+    {
         std::vector<uint32_t> cell_start(size_t(nx) * ny + 1, 0);
         for (size_t t = 0; t < n; ++t) {
             if (!usable[t]) continue;
@@ -220,6 +206,7 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
         return change && !change->flag[t] && !change->flag[change->previous.partner[k]];
     };
     MoldabilityTerms::Overlaps result;
+    result.negligible = tiny;
     result.offset.assign(n + 1, 0);
     if (change)
         for (uint32_t t = 0; t < n; ++t)
@@ -246,6 +233,196 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
         add(p.b, p.a, p.area);
     }
     return result;
+}
+
+//! Per triangle, for the cylinder test of a few changed triangles: its
+//! centroid relative to the centre of the changed ones' bounding sphere, the
+//! squared length of that, and the squared distance from the sphere's axis
+//! line beyond which its bounding sphere cannot meet the changed ones' (with
+//! a margin for rounding).
+struct Cylinder {
+    std::vector<Vec3> offset;
+    std::vector<double> length2, limit2;
+};
+
+Cylinder cylinder_test(const Shell& shell, const std::vector<uint32_t>& changed) {
+    const size_t n = shell.triangle_count();
+    const auto corner = [&](size_t t, int k) -> const Vec3& { return shell.outer.vertices[shell.outer.triangles[t][k]]; };
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (uint32_t t : changed)
+        for (int k = 0; k < 3; ++k)
+            for (int i = 0; i < 3; ++i) {
+                lo[i] = std::min(lo[i], corner(t, k)[i]);
+                hi[i] = std::max(hi[i], corner(t, k)[i]);
+            }
+    const Vec3 centre = 0.5 * (lo + hi);
+    double radius = 0;
+    for (uint32_t t : changed)
+        for (int k = 0; k < 3; ++k) radius = std::max(radius, norm(corner(t, k) - centre));
+    Cylinder c;
+    c.offset.resize(n);
+    c.length2.resize(n);
+    c.limit2.resize(n);
+    for (size_t t = 0; t < n; ++t) {
+        const Vec3 middle = (1.0 / 3.0) * (corner(t, 0) + corner(t, 1) + corner(t, 2));
+        double r = 0;
+        for (int k = 0; k < 3; ++k) r = std::max(r, norm(corner(t, k) - middle));
+        c.offset[t] = middle - centre;
+        c.length2[t] = dot(c.offset[t], c.offset[t]);
+        const double reach = radius + r + 1e-7 * (std::sqrt(c.length2[t]) + radius + r);
+        c.limit2[t] = reach * reach;
+    }
+    return c;
+}
+
+//! The pairs along `axis` of a few changed triangles: each against the
+//! triangles whose bounding spheres project onto their bounding sphere's
+//! disc (the others' projections cannot meet theirs).
+struct FoundPair {
+    uint32_t a, b;
+    float area;
+};
+
+std::vector<FoundPair> pairs_of_few(const Shell& shell, const Vec3& axis, const std::vector<uint32_t>& changed,
+                                    const std::vector<char>& flag, const Cylinder& cylinder, double negligible) {
+    const auto [u, v] = projection_basis(axis);
+    struct Projected {
+        std::array<Point2, 3> triangle;
+        Box2 box;
+        bool usable;
+    };
+    const auto project = [&](uint32_t t) {
+        const Triangle& f = shell.outer.triangles[t];
+        const double facing = dot(shell.normal[t], axis);
+        Projected p;
+        p.usable = std::abs(facing) > 1e-9;
+        p.triangle = project_triangle(
+            {shell.outer.vertices[f[0]], shell.outer.vertices[f[1]], shell.outer.vertices[f[2]]}, u, v, facing);
+        const auto& q = p.triangle;
+        p.box = {{std::min({q[0].x, q[1].x, q[2].x}), std::min({q[0].y, q[1].y, q[2].y})},
+                 {std::max({q[0].x, q[1].x, q[2].x}), std::max({q[0].y, q[1].y, q[2].y})}};
+        return p;
+    };
+    std::vector<Projected> moved(changed.size());
+    Box2 hull{{1e300, 1e300}, {-1e300, -1e300}};
+    for (size_t i = 0; i < changed.size(); ++i) {
+        moved[i] = project(changed[i]);
+        for (int k = 0; k < 2; ++k) {
+            hull.lo[k] = std::min(hull.lo[k], moved[i].box.lo[k]);
+            hull.hi[k] = std::max(hull.hi[k], moved[i].box.hi[k]);
+        }
+    }
+    const auto meet = [](const Box2& a, const Box2& b) {
+        return std::max(a.lo[0], b.lo[0]) <= std::min(a.hi[0], b.hi[0]) &&
+               std::max(a.lo[1], b.lo[1]) <= std::min(a.hi[1], b.hi[1]);
+    };
+    const double area_scale = shell.unit_scale * shell.unit_scale;
+    std::vector<FoundPair> found;
+    for (uint32_t b = 0; b < shell.triangle_count(); ++b) {
+        const double along = dot(cylinder.offset[b], axis);
+        if (cylinder.length2[b] - along * along > cylinder.limit2[b]) continue;
+        const Projected pb = project(b);
+        if (!pb.usable || !meet(pb.box, hull)) continue;
+        for (size_t i = 0; i < changed.size(); ++i) {
+            const uint32_t a = changed[i];
+            if (!moved[i].usable || a == b || (flag[b] && b < a) || !meet(moved[i].box, pb.box)) continue;
+            if (dot(shell.normal[a], axis) * dot(shell.normal[b], axis) < 0) continue;
+            const auto& around = shell.neighbor[a];
+            if (around[0] == int(b) || around[1] == int(b) || around[2] == int(b)) continue;
+            const double shared = intersection_area(moved[i].triangle, pb.triangle);
+            if (shared > negligible) found.push_back({a, b, float(shared * area_scale)});
+        }
+    }
+    return found;
+}
+
+//! Replaces, in place, the rows of `o` that change: a changed triangle's
+//! pairs are all `found` ones, another triangle keeps its pairs with
+//! unchanged partners (in their order) and adds its `found` ones (in the
+//! order found). The rows in between shift as blocks.
+void replace_pairs(MoldabilityTerms::Overlaps& o, const std::vector<uint32_t>& changed, const std::vector<char>& flag,
+                   const std::vector<FoundPair>& found) {
+    std::vector<uint32_t> rows;
+    for (uint32_t t : changed) {
+        rows.push_back(t);
+        rows.insert(rows.end(), o.partner.begin() + o.offset[t], o.partner.begin() + o.offset[t + 1]);
+    }
+    for (const FoundPair& p : found) {
+        rows.push_back(p.a);
+        rows.push_back(p.b);
+    }
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    const size_t count = rows.size();
+    const auto row_index = [&](uint32_t t) { return size_t(std::lower_bound(rows.begin(), rows.end(), t) - rows.begin()); };
+    // The new rows, gathered before anything moves.
+    std::vector<uint32_t> start(count + 1, 0);
+    for (size_t i = 0; i < count; ++i) {
+        const uint32_t t = rows[i];
+        if (!flag[t])
+            for (uint32_t k = o.offset[t]; k < o.offset[t + 1]; ++k) start[i + 1] += !flag[o.partner[k]];
+    }
+    for (const FoundPair& p : found) {
+        ++start[row_index(p.a) + 1];
+        ++start[row_index(p.b) + 1];
+    }
+    for (size_t i = 0; i < count; ++i) start[i + 1] += start[i];
+    std::vector<uint32_t> partner(start.back());
+    std::vector<float> area(start.back());
+    std::vector<uint32_t> next(start.begin(), start.end() - 1);
+    const auto add = [&](size_t i, uint32_t q, float a) {
+        partner[next[i]] = q;
+        area[next[i]++] = a;
+    };
+    for (size_t i = 0; i < count; ++i) {
+        const uint32_t t = rows[i];
+        if (!flag[t])
+            for (uint32_t k = o.offset[t]; k < o.offset[t + 1]; ++k)
+                if (!flag[o.partner[k]]) add(i, o.partner[k], o.area[k]);
+    }
+    for (const FoundPair& p : found) {
+        add(row_index(p.a), p.b, p.area);
+        add(row_index(p.b), p.a, p.area);
+    }
+    // Block i (the rows after rows[i], up to the next changing row) shifts by shift[i].
+    const size_t n = o.offset.size() - 1;
+    std::vector<int64_t> shift(count);
+    int64_t total = 0;
+    for (size_t i = 0; i < count; ++i) {
+        total += int64_t(start[i + 1] - start[i]) - int64_t(o.offset[rows[i] + 1] - o.offset[rows[i]]);
+        shift[i] = total;
+    }
+    const size_t old_size = o.partner.size(), new_size = size_t(int64_t(old_size) + total);
+    if (new_size > old_size) {
+        o.partner.resize(new_size);
+        o.area.resize(new_size);
+    }
+    const auto move_block = [&](size_t i) {
+        const uint32_t first = o.offset[rows[i] + 1];
+        const uint32_t last = i + 1 < count ? o.offset[rows[i + 1]] : uint32_t(old_size);
+        if (last == first) return;
+        std::memmove(o.partner.data() + first + shift[i], o.partner.data() + first, (last - first) * sizeof(uint32_t));
+        std::memmove(o.area.data() + first + shift[i], o.area.data() + first, (last - first) * sizeof(float));
+    };
+    // A block moving left lands past the blocks before it that move right
+    // (and on those that moved left already), and conversely.
+    for (size_t i = 0; i < count; ++i)
+        if (shift[i] < 0) move_block(i);
+    for (size_t i = count; i-- > 0;)
+        if (shift[i] > 0) move_block(i);
+    for (size_t i = 0; i < count; ++i) {
+        const size_t at = size_t(int64_t(o.offset[rows[i]]) + (i > 0 ? shift[i - 1] : 0));
+        std::copy(partner.begin() + start[i], partner.begin() + start[i + 1], o.partner.begin() + at);
+        std::copy(area.begin() + start[i], area.begin() + start[i + 1], o.area.begin() + at);
+    }
+    for (size_t i = 0; i < count; ++i) {
+        const size_t last = i + 1 < count ? rows[i + 1] : n;
+        for (size_t t = rows[i] + 1; t <= last; ++t) o.offset[t] = uint32_t(int64_t(o.offset[t]) + shift[i]);
+    }
+    if (new_size < old_size) {
+        o.partner.resize(new_size);
+        o.area.resize(new_size);
+    }
 }
 
 }  // namespace
@@ -287,11 +464,23 @@ void update_moldability_terms(const Shell& shell, const std::vector<uint32_t>& c
                               MoldabilityTerms& terms) {
     std::vector<char> is_changed(shell.triangle_count(), 0);
     for (uint32_t t : changed) is_changed[t] = 1;
-    tbb::parallel_for(size_t(0), axes.size(), [&](size_t i) {
-        const int a = axes[i];
-        const Change change{changed, is_changed, terms.overlaps[a]};
-        terms.overlaps[a] = overlaps_along_axis(shell, terms.axes[a], &change);
-    });
+    constexpr size_t few = 64;
+    if (changed.size() <= few) {
+        if (changed.empty()) return;
+        const Cylinder cylinder = cylinder_test(shell, changed);
+        tbb::parallel_for(size_t(0), axes.size(), [&](size_t i) {
+            MoldabilityTerms::Overlaps& o = terms.overlaps[axes[i]];
+            const std::vector<FoundPair> found =
+                pairs_of_few(shell, terms.axes[axes[i]], changed, is_changed, cylinder, o.negligible);
+            replace_pairs(o, changed, is_changed, found);
+        });
+    } else {
+        tbb::parallel_for(size_t(0), axes.size(), [&](size_t i) {
+            const int a = axes[i];
+            const Change change{changed, is_changed, terms.overlaps[a]};
+            terms.overlaps[a] = overlaps_along_axis(shell, terms.axes[a], &change);
+        });
+    }
     terms.pair_count = 0;
     for (const auto& o : terms.overlaps) terms.pair_count += o.partner.size() / 2;
 }

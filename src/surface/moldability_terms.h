@@ -29,6 +29,10 @@ struct MoldabilityTerms {
         std::vector<uint32_t> offset;
         std::vector<uint32_t> partner;
         std::vector<float> area;
+        //! Shared projected areas up to this (in the projection's units
+        //! squared: 1e-9 of the mean box size squared when measured) are
+        //! not kept; an update of a few triangles keeps it.
+        double negligible = 0;
     };
     std::vector<Overlaps> overlaps;
     size_t pair_count = 0;  //!< overlapping pairs summed over the axes
@@ -42,7 +46,10 @@ MoldabilityTerms compute_moldability_terms(const Shell& shell, double draft_radi
 
 //! Measures again, along the given axes (indices into terms.axes), the
 //! overlaps of the `changed` triangles (after their vertices moved); the
-//! other pairs are kept. Axes in parallel.
+//! other pairs are kept. Axes in parallel. A few changed triangles (an
+//! edit's, a smoothing step's) cost O(N) cheap tests per axis (bounding
+//! spheres against the changed ones' cylinder along the axis) and a shift
+//! of the axis' lists in place, not a pass over all pairs.
 void update_moldability_terms(const Shell& shell, const std::vector<uint32_t>& changed, const std::vector<int>& axes,
                               MoldabilityTerms& terms);
 

@@ -3,8 +3,8 @@
 //! the geometry: on a convex sphere no two outer triangles facing the same
 //! side of an axis overlap in projection (it is a double height field), while
 //! two stacked spheres overlap by the lens where their projected discs meet;
-//! and updating the terms of a few or of many moved triangles gives the pairs
-//! measured from scratch.
+//! and updating the terms of a few (spread or in one patch) or of many moved
+//! triangles gives the pairs measured from scratch.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -153,20 +153,33 @@ PairLists pair_lists(const MoldabilityTerms& terms) {
 }
 
 //! Moves `count` vertices of the lower of the stacked spheres (every 7th off
-//! its bounding box, 7% of the way to its centre: the unit scale stays),
-//! updates the terms of the triangles around them and compares with the
-//! terms measured from scratch.
-void expect_update_equals_recompute(size_t count) {
+//! its bounding box, or with `clustered` the nearest to a point of its upper
+//! half; 7% of the way to its centre: the unit scale stays), updates the
+//! terms of the triangles around them and compares with the terms measured
+//! from scratch.
+void expect_update_equals_recompute(size_t count, bool clustered = false) {
     fabvdb::Progress progress;
     fabvdb::Mesh mesh =
         fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 10.0, 3), fabvdb::test::make_sphere({0, 0, 30}, 10.0, 3));
     const fabvdb::surface::Shell before = fabvdb::test::shell_of(mesh, 1.0);
     MoldabilityTerms updated = fabvdb::surface::compute_moldability_terms(before, 0.0, progress);
     std::vector<char> moved(mesh.vertices.size(), 0);
-    for (size_t i = 0, v = 0; i < count; v += 7) {
+    std::vector<size_t> order;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         const Vec3& p = mesh.vertices[v];
-        if (std::abs(p[0]) > 9 || std::abs(p[1]) > 9 || std::abs(p[2]) > 9) continue;  // not on the bounding box
-        ++i;
+        if (p[2] > 15 || std::abs(p[0]) > 9 || std::abs(p[1]) > 9 || std::abs(p[2]) > 9) continue;  // not on the bounding box
+        if (clustered || v % 7 == 0) order.push_back(v);
+    }
+    if (clustered) {
+        const auto distance = [&](size_t v) {
+            const Vec3& p = mesh.vertices[v];
+            return std::hypot(p[0] - 3.0, p[1] - 2.0, p[2] - 8.5);
+        };
+        std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return distance(a) < distance(b); });
+    }
+    ASSERT_GE(order.size(), count);
+    for (size_t i = 0; i < count; ++i) {
+        const size_t v = order[i];
         moved[v] = 1;
         mesh.vertices[v] = {0.93 * mesh.vertices[v][0], 0.93 * mesh.vertices[v][1], 0.93 * mesh.vertices[v][2]};
     }
@@ -203,6 +216,10 @@ void expect_update_equals_recompute(size_t count) {
 
 TEST(MoldabilityTerms, UpdatingAFewMovedTrianglesEqualsMeasuringAgain) {
     expect_update_equals_recompute(2);  // about 12 triangles: each box against the changed ones
+}
+
+TEST(MoldabilityTerms, UpdatingAMovedPatchEqualsMeasuringAgain) {
+    expect_update_equals_recompute(5, true);  // a patch under the upper sphere: most triangles out of its reach
 }
 
 TEST(MoldabilityTerms, UpdatingManyMovedTrianglesEqualsMeasuringAgain) {
