@@ -2,12 +2,16 @@
 //! gradient of the local smoothness terms, one-vertex finite differences of
 //! E with the labels held, sequential projected moves with fold checks, then
 //! incremental overlap terms (the touched parts' axes each iteration, the
-//! other axes once at the end) and parting lines of the touched parts, with
-//! step halving when an iteration does not lower E.
+//! other axes once at the end) and parting lines of the touched parts (their
+//! surfaces and flow networks kept over the iterations, only the moved
+//! triangles measured again), with step halving when an iteration does not
+//! lower E.
 #include "surface/boundary_smoothing.h"
 
 #include <algorithm>
+#include <memory>
 #include <set>
+#include <tuple>
 
 #include <openvdb/math/Proximity.h>
 #include <tbb/parallel_for.h>
@@ -40,7 +44,8 @@ public:
           reference_inner_(shell.inner),
           reference_normal_(shell.normal),
           around_(vertex_count_),
-          boundary_(vertex_count_) {
+          boundary_(vertex_count_),
+          networks_(decomposition.parts.size()) {
         for (size_t t = 0; t < shell.triangle_count(); ++t)
             for (uint32_t v : shell.outer.triangles[t]) around_[v].push_back(uint32_t(t));
         for (size_t t = 0; t < shell.triangle_count(); ++t) {
@@ -125,7 +130,8 @@ private:
         std::vector<std::pair<uint32_t, std::pair<Vec3, Vec3>>> vertices;  // outer, inner before the move
         std::vector<uint32_t> triangles;
         std::vector<int> axes;  // the touched parts' axes, whose overlaps were measured again
-        std::vector<std::pair<int, PartMolding>> parts;
+        std::vector<int> parts;
+        std::vector<std::pair<std::vector<char>, MoldabilityEnergy>> labels;  // of `parts` before
     };
 
     //! Mean corner cosine over the snake vertices with two snake edges.
@@ -349,6 +355,21 @@ private:
         undo.triangles.assign(triangles.begin(), triangles.end());
     }
 
+    //! The parts' surfaces and networks follow the moved vertices (in
+    //! parallel); a part's network is made the first time it is needed.
+    void update_parts(const Undo& undo) {
+        std::vector<char> moved(vertex_count_, 0);
+        for (const auto& [v, position] : undo.vertices) moved[v] = 1;
+        tbb::parallel_for(size_t(0), undo.parts.size(), [&](size_t i) {
+            const int p = undo.parts[i];
+            const std::vector<uint32_t> changed = update_part_surface(shell_, moved, d_.parts[p].surface);
+            if (networks_[p])
+                networks_[p]->update(changed);
+            else
+                networks_[p] = std::make_unique<PartNetwork>(d_.parts[p].surface);
+        });
+    }
+
     //! Overlap terms of the moved triangles along the axes of their parts (the
     //! others follow at the end) and parting lines of their parts.
     std::vector<int> recompute(Undo& undo) {
@@ -357,20 +378,22 @@ private:
         for (int p : touched) axes.insert(terms_.axis_of_direction[d_.parts[p].direction]);
         undo.axes.assign(axes.begin(), axes.end());
         update_moldability_terms(shell_, undo.triangles, undo.axes, terms_);
-        const std::vector<int> parts(touched.begin(), touched.end());
-        for (int p : parts) undo.parts.push_back({p, std::move(d_.parts[p])});
-        tbb::parallel_for(size_t(0), parts.size(), [&](size_t i) {
-            d_.parts[parts[i]] = parting_line(shell_, terms_, d_.part_of_triangle, parts[i],
-                                              undo.parts[i].second.direction, options_.weights);
+        undo.parts.assign(touched.begin(), touched.end());
+        for (int p : undo.parts) undo.labels.emplace_back(d_.parts[p].upper, d_.parts[p].energy);
+        update_parts(undo);
+        tbb::parallel_for(size_t(0), undo.parts.size(), [&](size_t i) {
+            networks_[undo.parts[i]]->relabel(shell_, terms_, options_.weights, d_.parts[undo.parts[i]]);
         });
-        return parts;
+        return undo.parts;
     }
 
     void revert(Undo& undo) {
         for (auto it = undo.vertices.rbegin(); it != undo.vertices.rend(); ++it)
             set_vertex(it->first, it->second.first, it->second.second);
         update_moldability_terms(shell_, undo.triangles, undo.axes, terms_);
-        for (auto& [p, molding] : undo.parts) d_.parts[p] = std::move(molding);
+        update_parts(undo);
+        for (size_t i = 0; i < undo.parts.size(); ++i)
+            std::tie(d_.parts[undo.parts[i]].upper, d_.parts[undo.parts[i]].energy) = std::move(undo.labels[i]);
     }
 
     Shell& shell_;
@@ -385,6 +408,7 @@ private:
     std::vector<std::vector<uint32_t>> boundary_;  // snake neighbours of each vertex
     std::vector<std::vector<uint32_t>> near_;      // projection candidates of movable vertices
     std::vector<uint32_t> movable_;
+    std::vector<std::unique_ptr<PartNetwork>> networks_;  // per part, once relabelled
     size_t regular_count_ = 0;
     std::vector<char> outer_upper_;
     std::vector<std::array<char, 2>> side_upper_;

@@ -3,27 +3,53 @@
 //! from the side quads' own layout; the vertical side edges are matched by
 //! vertex, every match linked, so a boundary that pinches at a vertex still
 //! gives a connected surface graph. Linear in the part's size (plus a sort of
-//! its boundary corners).
+//! its boundary corners). update_part_surface measures again, with the same
+//! arithmetic, the triangles on moved vertices.
 #include "surface/part_surface.h"
 
 #include <algorithm>
+#include <tuple>
 
 #include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
 
+namespace {
+
+//! The unit normal and unit-cube area of a surface triangle.
+std::pair<Vec3, double> measure(const Shell& shell, PartSurface::Kind kind, uint32_t source,
+                                const std::array<uint32_t, 3>& c) {
+    const Vec3 n = cross(corner_position(shell, c[1]) - corner_position(shell, c[0]),
+                         corner_position(shell, c[2]) - corner_position(shell, c[0]));
+    return {kind == PartSurface::outer ? shell.normal[source] : normalized(n),
+            0.5 * norm(n) * (shell.unit_scale * shell.unit_scale)};
+}
+
+}  // namespace
+
+std::vector<uint32_t> update_part_surface(const Shell& shell, const std::vector<char>& moved, PartSurface& s) {
+    const size_t v_count = shell.outer.vertices.size();
+    std::vector<uint32_t> changed;
+    for (uint32_t i = 0; i < s.size(); ++i) {
+        const auto& c = s.corners[i];
+        const auto on_moved = [&](uint32_t id) { return moved[id < v_count ? id : id - v_count] != 0; };
+        if (!on_moved(c[0]) && !on_moved(c[1]) && !on_moved(c[2])) continue;
+        std::tie(s.normal[i], s.area[i]) = measure(shell, s.kind[i], s.source[i], c);
+        changed.push_back(i);
+    }
+    return changed;
+}
+
 PartSurface part_surface(const Shell& shell, const std::vector<int>& part_of_triangle, int part) {
     PartSurface s;
     const uint32_t v_count = uint32_t(shell.outer.vertices.size());
-    const double area_scale = shell.unit_scale * shell.unit_scale;
     const auto add = [&](PartSurface::Kind kind, uint32_t source, std::array<uint32_t, 3> c) {
-        const Vec3 n = cross(corner_position(shell, c[1]) - corner_position(shell, c[0]),
-                             corner_position(shell, c[2]) - corner_position(shell, c[0]));
+        const auto [normal, area] = measure(shell, kind, source, c);
         s.kind.push_back(kind);
         s.source.push_back(source);
         s.corners.push_back(c);
-        s.normal.push_back(kind == PartSurface::outer ? shell.normal[source] : normalized(n));
-        s.area.push_back(0.5 * norm(n) * area_scale);
+        s.normal.push_back(normal);
+        s.area.push_back(area);
     };
     // A solid part without boundary is a whole piece of S_low: its prisms'
     // inner faces meet on the medial surface, inside the part.

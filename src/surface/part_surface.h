@@ -44,6 +44,12 @@ struct PartSurface {
 //! The surface of the part made of the outer triangles t with part_of_triangle[t] == part.
 PartSurface part_surface(const Shell& shell, const std::vector<int>& part_of_triangle, int part);
 
+//! Measures again the normal and area of the surface triangles of `s` (a
+//! part_surface of `shell`) with a corner on an outer vertex v with
+//! moved[v] != 0 (its inner vertex moves with it), as part_surface would
+//! after the move; returns their indices. Linear in the surface's size.
+std::vector<uint32_t> update_part_surface(const Shell& shell, const std::vector<char>& moved, PartSurface& s);
+
 //! Position of a corner id of a PartSurface.
 inline const Vec3& corner_position(const Shell& shell, uint32_t id) {
     const size_t v = shell.outer.vertices.size();

@@ -79,6 +79,18 @@ public:
         for (size_t e = 0; e < m; ++e) reverse_edge_[reverse[e]] = GraphEdge(edges[e].first, e);
     }
 
+    //! After the normals of these surface triangles changed: their edges' capacities.
+    void update(const std::vector<uint32_t>& triangles) {
+        for (uint32_t i : triangles) {
+            size_t at = first_out_[i] + 2;
+            for (uint32_t j : s_.adjacent(i)) {
+                const double w = std::max(0.0, dot(s_.normal[std::min(i, j)], s_.normal[std::max(i, j)]));
+                capacity_[at] = capacity_[reverse_edge_[at].idx] = w;
+                ++at;
+            }
+        }
+    }
+
     //! Per surface triangle: in M⁺ for direction d.
     std::vector<char> labels(const Vec3& d) {
         const size_t from_source = capacity_.size() - 2 * n_;
@@ -252,6 +264,27 @@ PartMolding molding_of(const Shell& shell, const MoldabilityTerms& terms, PartSu
     molding.surface = std::move(surface);
     return molding;
 }
+
+}  // namespace
+
+class PartNetwork::Network : public CutNetwork {
+public:
+    using CutNetwork::CutNetwork;
+};
+
+PartNetwork::PartNetwork(const PartSurface& surface) : network_(std::make_unique<Network>(surface)) {}
+
+PartNetwork::~PartNetwork() = default;
+
+void PartNetwork::update(const std::vector<uint32_t>& triangles) { network_->update(triangles); }
+
+void PartNetwork::relabel(const Shell& shell, const MoldabilityTerms& terms, const MoldabilityWeights& weights,
+                          PartMolding& molding) {
+    std::tie(molding.upper, molding.energy) =
+        label_part(shell, terms, molding.surface, *network_, molding.direction, weights);
+}
+
+namespace {
 
 //! One direction per axis (d and −d give the same mold with its halves
 //! swapped: mirrored unary costs, the same E_P), the `count` axes first whose

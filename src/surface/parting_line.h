@@ -10,6 +10,7 @@
 //! relabelling and fixing the path — so M⁺ and M⁻ are each one connected piece.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "core/progress.h"
@@ -28,6 +29,29 @@ struct PartMolding {
 //! Parting line of `part` for the given direction.
 PartMolding parting_line(const Shell& shell, const MoldabilityTerms& terms, const std::vector<int>& part_of_triangle,
                          int part, int direction, const MoldabilityWeights& weights);
+
+//! The flow network of a part's surface, kept while the part keeps its
+//! triangles but S_low's vertices move (boundary smoothing): after
+//! update_part_surface, only the capacities of the changed triangles' edges
+//! are set again. relabel gives what parting_line gives for the part as it
+//! is now. The surface must stay in place while the network lives.
+class PartNetwork {
+public:
+    explicit PartNetwork(const PartSurface& surface);
+    ~PartNetwork();
+    PartNetwork(const PartNetwork&) = delete;
+    PartNetwork& operator=(const PartNetwork&) = delete;
+    //! After the normals of these surface triangles changed.
+    void update(const std::vector<uint32_t>& triangles);
+    //! Sets molding.upper and molding.energy for molding.direction;
+    //! molding.surface must be the network's surface.
+    void relabel(const Shell& shell, const MoldabilityTerms& terms, const MoldabilityWeights& weights,
+                 PartMolding& molding);
+
+private:
+    class Network;
+    std::unique_ptr<Network> network_;
+};
 
 //! argmin_{d∈D} E_P(P, d) with the part fixed (used after cut and merge edits,
 //! §3.5). d and −d give the same E_P, so the 81 axes are ranked by the E_P

@@ -4,17 +4,20 @@
 // triangles alone, and a half with a boundary gets side quads so that its
 // surface is closed — every directed edge once and its reverse once — with
 // the adjacency of those matched edges, areas in unit-cube units and unit
-// normals facing out of the material.
+// normals facing out of the material; updating it after a vertex moved gives
+// the surface built again.
 #include "surface/part_surface.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
 
 #include "support/check_vec3.h"
 #include "support/shapes.h"
+#include "core/vec3_ops.h"
 #include "surface/shell.h"
 
 namespace fabvdb::surface {
@@ -122,6 +125,44 @@ TEST(PartSurface, AreasAreInUnitCubeUnits) {
     for (double a : s.area) area += a;
     // Six 2 mm faces, 24 mm², at unit scale 1/2: 6 unit-cube units.
     EXPECT_NEAR(area, 6.0, 1e-12);
+}
+
+TEST(PartSurface, UpdatingAfterAMoveEqualsBuildingAgain) {
+    Shell shell = box_shell(false);
+    std::vector<int> part_of_triangle;
+    for (const Triangle& t : shell.outer.triangles) {
+        double z = 0;
+        for (uint32_t v : t) z += shell.outer.vertices[v][2] / 3.0;
+        part_of_triangle.push_back(z > 0 ? 0 : 1);
+    }
+    PartSurface updated = part_surface(shell, part_of_triangle, 0);
+    // One top corner pulled in (outer and inner), the box's extent kept by the others.
+    const uint32_t v = shell.outer.triangles[0][0];
+    std::vector<char> moved(shell.outer.vertices.size(), 0);
+    moved[v] = 1;
+    shell.outer.vertices[v] = 0.8 * shell.outer.vertices[v];
+    shell.inner[v] = 0.7 * shell.inner[v];
+    for (size_t t = 0; t < shell.triangle_count(); ++t) {
+        const Triangle& f = shell.outer.triangles[t];
+        const Vec3 c = cross(shell.outer.vertices[f[1]] - shell.outer.vertices[f[0]],
+                             shell.outer.vertices[f[2]] - shell.outer.vertices[f[0]]);
+        shell.normal[t] = normalized(c);
+    }
+    const std::vector<uint32_t> changed = update_part_surface(shell, moved, updated);
+    const PartSurface fresh = part_surface(shell, part_of_triangle, 0);
+    ASSERT_EQ(updated.size(), fresh.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < fresh.size(); ++i) {
+        EXPECT_EQ(updated.normal[i], fresh.normal[i]) << i;
+        EXPECT_EQ(updated.area[i], fresh.area[i]) << i;
+        const bool listed = std::find(changed.begin(), changed.end(), uint32_t(i)) != changed.end();
+        const auto& c = fresh.corners[i];
+        const size_t n = shell.outer.vertices.size();
+        const bool on_v = c[0] % n == v || c[1] % n == v || c[2] % n == v;
+        EXPECT_EQ(listed, on_v) << i;
+        differ += on_v;
+    }
+    EXPECT_GT(differ, 4u);
 }
 
 }  // namespace

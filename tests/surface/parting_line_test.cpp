@@ -3,7 +3,8 @@
 //! the lower in M⁻, each one connected piece, and the part is moldable (no
 //! overhang or overlap beyond the band of triangles at the equator). Along
 //! +x the cut turns with the direction. best_parting_line finds an axis for
-//! which the sphere is as moldable.
+//! which the sphere is as moldable. A part's network kept while vertices move
+//! relabels as a parting line computed from scratch on the moved shell.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,4 +101,47 @@ TEST(PartingLine, BestAxisOfASphereIsAsGoodAsAny) {
         sphere.shell, sphere.terms, sphere.one_part, 0, {}, {}, sphere.progress, 81);
     EXPECT_LE(best.energy.total, along_z + 1e-12);
     expect_split_along(sphere, best, sphere.terms.directions.directions[best.direction]);
+}
+
+TEST(PartingLine, AKeptNetworkFollowsMovedVertices) {
+    Sphere sphere;
+    std::vector<int> halves(sphere.shell.triangle_count());
+    for (size_t t = 0; t < halves.size(); ++t) {
+        double z = 0;
+        for (uint32_t v : sphere.shell.outer.triangles[t]) z += sphere.shell.outer.vertices[v][2] / 3;
+        halves[t] = z > 3.0 ? 0 : 1;
+    }
+    const int side = fabvdb::test::nearest_direction(sphere.terms.directions.directions, {1, 0, 0.3});
+    fabvdb::surface::PartMolding kept =
+        fabvdb::surface::parting_line(sphere.shell, sphere.terms, halves, 0, side, {});
+    fabvdb::surface::PartNetwork network(kept.surface);
+    // A dent across the boundary: the vertices with 0 < z < 12 pulled in.
+    fabvdb::Mesh mesh = sphere.shell.outer;
+    for (Vec3& p : mesh.vertices)
+        if (p[2] > 0 && p[2] < 12) p = {0.8 * p[0], 0.8 * p[1], p[2]};
+    const fabvdb::surface::Shell moved_shell = fabvdb::test::shell_of(mesh, 1.0);
+    ASSERT_EQ(moved_shell.unit_scale, sphere.shell.unit_scale);
+    std::vector<char> moved(mesh.vertices.size(), 0);
+    size_t count = 0;
+    for (size_t v = 0; v < moved.size(); ++v) {
+        moved[v] = moved_shell.outer.vertices[v] != sphere.shell.outer.vertices[v] ||
+                   moved_shell.inner[v] != sphere.shell.inner[v];
+        count += moved[v];
+    }
+    ASSERT_GT(count, 50u);
+    network.update(fabvdb::surface::update_part_surface(moved_shell, moved, kept.surface));
+    network.relabel(moved_shell, sphere.terms, {}, kept);
+    const fabvdb::surface::PartMolding fresh =
+        fabvdb::surface::parting_line(moved_shell, sphere.terms, halves, 0, side, {});
+    ASSERT_EQ(kept.surface.size(), fresh.surface.size());
+    for (size_t i = 0; i < fresh.surface.size(); ++i) {
+        EXPECT_EQ(kept.surface.normal[i], fresh.surface.normal[i]) << "surface triangle " << i;
+        EXPECT_EQ(kept.surface.area[i], fresh.surface.area[i]) << "surface triangle " << i;
+    }
+    EXPECT_EQ(kept.upper, fresh.upper);
+    EXPECT_EQ(kept.energy.total, fresh.energy.total);
+    // The move changed the labelling: a stale network would not pass the above.
+    const fabvdb::surface::PartMolding before =
+        fabvdb::surface::parting_line(sphere.shell, sphere.terms, halves, 0, side, {});
+    EXPECT_NE(before.energy.total, fresh.energy.total);
 }
