@@ -203,9 +203,10 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
     for (size_t c = 0; c < count; ++c) order[c] = int(c);
     std::sort(order.begin(), order.end(), [&](int a, int b) { return projected[a] > projected[b]; });
 
-    // Cheapest path from root[side] to every node: entering a node of the other
+    // Cheapest path from root[side] to `target`: entering a node of the other
     // label costs its projected area; fixed nodes of the other label block.
-    const auto search = [&](int side, std::vector<double>& distance, std::vector<int>& previous) {
+    // The search stops when the target is settled (its path is then final).
+    const auto search = [&](int side, int target, std::vector<double>& distance, std::vector<int>& previous) {
         distance.assign(count, 1e300);
         previous.assign(count, -1);
         if (root[side] < 0) return;
@@ -217,6 +218,7 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
             const auto [dist, c] = queue.top();
             queue.pop();
             if (dist > distance[c]) continue;
+            if (c == target) return;
             for (int next : links[c]) {
                 const bool same = (label[next] != 0) == (side == 1);
                 if (fixed[next] && !same) continue;
@@ -233,8 +235,8 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
     std::vector<int> previous[2];
     for (int c : order) {
         if (fixed[c]) continue;
-        search(0, distance[0], previous[0]);
-        search(1, distance[1], previous[1]);
+        search(0, c, distance[0], previous[0]);
+        search(1, c, distance[1], previous[1]);
         const int side = distance[1][c] <= distance[0][c] ? 1 : 0;
         for (int x = c; x >= 0 && !fixed[x]; x = previous[side][x]) {
             label[x] = char(side);
