@@ -235,14 +235,40 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
     return result;
 }
 
-//! Per triangle, for the cylinder test of a few changed triangles: its
-//! centroid relative to the centre of the changed ones' bounding sphere, the
-//! squared length of that, and the squared distance from the sphere's axis
-//! line beyond which its bounding sphere cannot meet the changed ones' (with
-//! a margin for rounding).
+//! The triangles near a few changed ones along an axis, found by bounding
+//! spheres: per triangle its centroid relative to the centre of the changed
+//! triangles' bounding sphere, the squared length of that, and the squared
+//! distance from that sphere's axis line beyond which its bounding sphere
+//! cannot meet the changed ones' (with a margin for rounding); the same for
+//! clusters of triangles (cells of a 3-D grid), tested first.
 struct Cylinder {
-    std::vector<Vec3> offset;
-    std::vector<double> length2, limit2;
+    struct Spheres {
+        std::vector<Vec3> offset;
+        std::vector<double> length2, limit2;
+        void add(const Vec3& o, double reach) {
+            offset.push_back(o);
+            length2.push_back(dot(o, o));
+            limit2.push_back(reach * reach);
+        }
+        bool out_of_reach(size_t i, const Vec3& axis) const {
+            const double along = dot(offset[i], axis);
+            return length2[i] - along * along > limit2[i];
+        }
+    };
+    Spheres triangles, clusters;
+    std::vector<uint32_t> cluster_start, members;  //!< members of cluster c: [cluster_start[c], cluster_start[c + 1])
+
+    //! The triangles whose spheres reach the changed ones' along `axis`, in increasing order.
+    std::vector<uint32_t> near(const Vec3& axis) const {
+        std::vector<uint32_t> found;
+        for (size_t c = 0; c + 1 < cluster_start.size(); ++c) {
+            if (clusters.out_of_reach(c, axis)) continue;
+            for (uint32_t k = cluster_start[c]; k < cluster_start[c + 1]; ++k)
+                if (!triangles.out_of_reach(members[k], axis)) found.push_back(members[k]);
+        }
+        std::sort(found.begin(), found.end());
+        return found;
+    }
 };
 
 Cylinder cylinder_test(const Shell& shell, const std::vector<uint32_t>& changed) {
@@ -259,18 +285,52 @@ Cylinder cylinder_test(const Shell& shell, const std::vector<uint32_t>& changed)
     double radius = 0;
     for (uint32_t t : changed)
         for (int k = 0; k < 3; ++k) radius = std::max(radius, norm(corner(t, k) - centre));
+    const auto reach = [&](const Vec3& offset, double r) {
+        return radius + r + 1e-7 * (norm(offset) + radius + r);
+    };
+    std::vector<Vec3> middle(n);
+    std::vector<double> own(n, 0.0);
+    Vec3 all_lo{1e300, 1e300, 1e300}, all_hi{-1e300, -1e300, -1e300};
     Cylinder c;
-    c.offset.resize(n);
-    c.length2.resize(n);
-    c.limit2.resize(n);
     for (size_t t = 0; t < n; ++t) {
-        const Vec3 middle = (1.0 / 3.0) * (corner(t, 0) + corner(t, 1) + corner(t, 2));
+        middle[t] = (1.0 / 3.0) * (corner(t, 0) + corner(t, 1) + corner(t, 2));
+        for (int k = 0; k < 3; ++k) own[t] = std::max(own[t], norm(corner(t, k) - middle[t]));
+        c.triangles.add(middle[t] - centre, reach(middle[t] - centre, own[t]));
+        for (int i = 0; i < 3; ++i) {
+            all_lo[i] = std::min(all_lo[i], middle[t][i]);
+            all_hi[i] = std::max(all_hi[i], middle[t][i]);
+        }
+    }
+    // Clusters: cells of a grid of about n/4 cells over the centroids.
+    const int k = std::max(1, int(std::cbrt(double(n) / 4.0)));
+    const auto cell_of = [&](const Vec3& p) {
+        size_t index = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double extent = all_hi[i] - all_lo[i];
+            const int j = extent > 0 ? std::clamp(int((p[i] - all_lo[i]) / extent * k), 0, k - 1) : 0;
+            index = index * size_t(k) + size_t(j);
+        }
+        return index;
+    };
+    std::vector<uint32_t> start(size_t(k) * k * k + 1, 0);
+    std::vector<size_t> cell(n);
+    for (size_t t = 0; t < n; ++t) ++start[(cell[t] = cell_of(middle[t])) + 1];
+    for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+    std::vector<uint32_t> members(n), fill(start.begin(), start.end() - 1);
+    for (size_t t = 0; t < n; ++t) members[fill[cell[t]]++] = uint32_t(t);
+    c.cluster_start.push_back(0);
+    for (size_t i = 0; i + 1 < start.size(); ++i) {
+        if (start[i] == start[i + 1]) continue;
+        Vec3 sum{0, 0, 0};
+        for (uint32_t m = start[i]; m < start[i + 1]; ++m) sum = sum + middle[members[m]];
+        const Vec3 mean = (1.0 / double(start[i + 1] - start[i])) * sum;
         double r = 0;
-        for (int k = 0; k < 3; ++k) r = std::max(r, norm(corner(t, k) - middle));
-        c.offset[t] = middle - centre;
-        c.length2[t] = dot(c.offset[t], c.offset[t]);
-        const double reach = radius + r + 1e-7 * (std::sqrt(c.length2[t]) + radius + r);
-        c.limit2[t] = reach * reach;
+        for (uint32_t m = start[i]; m < start[i + 1]; ++m) {
+            r = std::max(r, norm(middle[members[m]] - mean) + own[members[m]]);
+            c.members.push_back(members[m]);
+        }
+        c.clusters.add(mean - centre, reach(mean - centre, r));
+        c.cluster_start.push_back(uint32_t(c.members.size()));
     }
     return c;
 }
@@ -318,9 +378,7 @@ std::vector<FoundPair> pairs_of_few(const Shell& shell, const Vec3& axis, const 
     };
     const double area_scale = shell.unit_scale * shell.unit_scale;
     std::vector<FoundPair> found;
-    for (uint32_t b = 0; b < shell.triangle_count(); ++b) {
-        const double along = dot(cylinder.offset[b], axis);
-        if (cylinder.length2[b] - along * along > cylinder.limit2[b]) continue;
+    for (uint32_t b : cylinder.near(axis)) {
         const Projected pb = project(b);
         if (!pb.usable || !meet(pb.box, hull)) continue;
         for (size_t i = 0; i < changed.size(); ++i) {
