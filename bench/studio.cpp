@@ -7,7 +7,9 @@
 // repeated at several places (`--repeat N`, default 5; undone in between) and
 // the median is printed next to the thesis' Table 3.3 (single thread, 2.2 GHz;
 // its smoothing smooths every snake vertex, ours a stroke of the brush
-// radius, so that ratio compares different work). The page side (WebSocket,
+// radius, so that ratio compares different work). Under each row, the
+// median processor time of the same edits (all threads; on a shared machine
+// it varies far less than the wall time). The page side (WebSocket,
 // recolouring) is measured by bench/studio_page.mjs.
 // Usage: bench_studio [--repeat N] [model ...]   (default: bunny kitten fertility airplane)
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <map>
 #include <optional>
 #include <string>
@@ -50,11 +53,24 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
+//! Processor time of the whole process (every thread), ms.
+double cpu_ms() {
+    timespec now;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return 1e3 * double(now.tv_sec) + 1e-6 * double(now.tv_nsec);
+}
+
+//! Processor time of the last wall_ms call, ms.
+double last_cpu_ms = 0;
+
 template <class F>
 double wall_ms(F&& f) {
+    const double cpu_start = cpu_ms();
     const auto start = std::chrono::steady_clock::now();
     f();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    last_cpu_ms = cpu_ms() - cpu_start;
+    return wall;
 }
 
 Vec3 centroid(const Shell& shell, size_t t) {
@@ -90,7 +106,7 @@ int main(int argc, char** argv) {
         DecompositionSession& session = *made;
         const Shell& shell = session.shell();
         const double brush = 0.025 * norm(box.max - box.min);
-        std::map<std::string, std::vector<double>> times;
+        std::map<std::string, std::vector<double>> times, cpu;
         // Boundary points to stroke at, spread along the boundary lines.
         std::vector<Vec3> at_boundary;
         for (size_t p = 0; p < session.decomposition().parts.size(); ++p)
@@ -102,6 +118,7 @@ int main(int argc, char** argv) {
             Edit no_cut{Edit::no_cut, {p}, brush, false};
             try {
                 times["no_cut"].push_back(wall_ms([&] { session.apply(no_cut, progress); }));
+                cpu["no_cut"].push_back(last_cpu_ms);
                 times["undo"].push_back(wall_ms([&] { session.undo(); }));
                 times["redo"].push_back(wall_ms([&] { session.redo(); }));
                 session.undo();
@@ -111,6 +128,7 @@ int main(int argc, char** argv) {
             Edit smooth{Edit::smooth, {p}, brush, false};
             try {
                 times["smooth"].push_back(wall_ms([&] { session.apply(smooth, progress); }));
+                cpu["smooth"].push_back(last_cpu_ms);
                 session.undo();
             } catch (const Error& e) {
                 std::fprintf(stderr, "%s: smooth: %s\n", row.name, e.what());
@@ -140,8 +158,10 @@ int main(int argc, char** argv) {
                 cut.points.push_back(c + ring * (std::cos(2 * M_PI * i / 12) * u + std::sin(2 * M_PI * i / 12) * v));
             try {
                 times["cut"].push_back(wall_ms([&] { session.apply(cut, progress); }));
+                cpu["cut"].push_back(last_cpu_ms);
                 Edit merge{Edit::merge, {c, c + 1.6 * ring * u}, 0, false};
                 times["merge"].push_back(wall_ms([&] { session.apply(merge, progress); }));
+                cpu["merge"].push_back(last_cpu_ms);
                 session.undo();
                 session.undo();
             } catch (const Error& e) {
@@ -154,6 +174,8 @@ int main(int argc, char** argv) {
                     row.name, shell.triangle_count(), session.decomposition().parts.size(), session_ms / 1e3,
                     median(times["no_cut"]), cut, row.cut_ms / cut, merge, row.merge_ms / merge, smooth,
                     row.smoothing_ms / smooth, median(times["undo"]), median(times["redo"]));
+        std::printf("%-10s %13s | %8s %8.1f %7.1f %7s %7.1f %7s %7.1f\n", "", "processor ms", "", median(cpu["no_cut"]),
+                    median(cpu["cut"]), "", median(cpu["merge"]), "", median(cpu["smooth"]));
         std::fflush(stdout);
     }
     return 0;
