@@ -99,4 +99,16 @@ expect_exit 0 "$FABVDB" info "$WORK/hollow_out.stl" --report "$WORK/hollow_out.j
 expect_match "$(cat "$WORK/hollow_out.json")" '"volume": 24[67][0-9][0-9]'
 expect_match "$(cat "$WORK/hollow_out.json")" '"components": 2'
 
+
+# A closed assembly whose crossing shells, resolved at mesh level, cannot be
+# rounded to float coordinates without crossing (the corpus'
+# multipletextures.3mf): repaired through voxels, a clean solid, exit 0
+# (it stopped with an internal error, exit 4).
+expect_exit 0 "$FABVDB" repair "$SHARED/corpus/multipletextures.3mf" --fit 60mm --voxel 0.6mm \
+  -o "$WORK/textures.stl" --report "$WORK/textures_repair.json" --quiet
+expect_match "$(cat "$WORK/textures_repair.json")" '"path": "volumetric"'
+expect_exit 0 "$FABVDB" info "$WORK/textures.stl" --report "$WORK/textures.json"
+expect_match "$(cat "$WORK/textures.json")" '"closed": true'
+expect_match "$(cat "$WORK/textures.json")" '"self_intersecting_pairs": 0'
+
 finish
