@@ -58,7 +58,6 @@ openvdb::FloatGrid::Ptr level_set_of(const Mesh& closed, double voxel) {
         *openvdb::math::Transform::createLinearTransform(voxel), points, triangles, 3.0f);
 }
 
-
 //! The cavities that stay open once the connected voids of `cavity` that
 //! hold one of `points` on their surface are filled: nullptr when none
 //! stays. Adds the filled voids' count and volume (mm³).
@@ -91,6 +90,7 @@ openvdb::FloatGrid::Ptr fill_cavities_at(const openvdb::FloatGrid& cavity, const
     }
     return open;
 }
+
 }  // namespace
 
 bool is_hollow_shell(const Mesh& mesh) {

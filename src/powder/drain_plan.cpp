@@ -51,7 +51,7 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     for (size_t p = 0; p < plan.patches.size(); ++p) {
         const uint32_t c = plan.patches.cavity[p];
         if (has_site[c]) continue;
-        has_site[c] = true;
+        has_site[c] = true;  // one point per cavity
         plan.cavities_without_site.push_back(plan.patches.site[p]);
     }
     clock.lap("hole candidates");
@@ -74,7 +74,6 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     const PowderSamples powder =
         drop_cavity_powder(cavity, plan.patches, caster, first, options.powder_samples, progress);
     clock.lap("powder drop");
-
 
     DrainabilityOptions model_options;
     model_options.repose_radians = options.repose_radians;

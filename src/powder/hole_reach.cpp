@@ -140,15 +140,12 @@ HoleReach hole_reach(const TurnSamples& samples, const DrainHole& hole, Crater c
         walk_above_surface(
             samples, hole, source, samples.first_gravity, samples.first_later_forest, samples.first_later_relief,
             repose_radians, [&](uint32_t a) { drains[a] = 1; }, [](uint32_t) {});
-        uint64_t any = 0;
         for (size_t a = 0; a < samples.first_grid.size(); ++a) {
             const uint32_t b = samples.later_of_first[a];
             if (b == kNoSample || !drains[b] || samples.first_cavity[a] != hole.cavity) continue;
             if (result.first.empty()) result.first.assign((size_t(samples.first_count[hole.cavity]) + 63) / 64, 0);
             set_bit(result.first, samples.first_chains.rank[a]);
-            any = 1;
         }
-        if (!any) result.first.clear();
     }
     result.later.resize(turns);
     result.later_rim.resize(turns);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/vec3_ops.h"
+#include "volume/aligned_frame.h"
 
 namespace fabvdb::surface {
 
@@ -23,15 +24,8 @@ constexpr int max_lines_per_side = 512;
 UndercutDepth undercut_depth(const Shell& shell, const std::vector<int>& part_of_triangle, int part,
                              const Vec3& direction, double spacing, double reach) {
     UndercutDepth result;
-    const Vec3 d = normalized(direction);
-    // e1 ⟂ d, built from the world axis least aligned with d; e2 = d × e1.
-    int least = 0;
-    for (int k = 1; k < 3; ++k)
-        if (std::abs(d[k]) < std::abs(d[least])) least = k;
-    Vec3 axis{0, 0, 0};
-    axis[least] = 1;
-    const Vec3 e1 = normalized(cross(axis, d));
-    const Vec3 e2 = cross(d, e1);
+    const volume::AlignedFrame frame = volume::aligned_frame(direction);
+    const Vec3 &d = frame.d, &e1 = frame.e1, &e2 = frame.e2;
     const Mesh& mesh = shell.outer;
     const size_t n = mesh.triangles.size();
 
