@@ -179,8 +179,8 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         message << options.input_name << ": " << filled_count << (filled_count == 1 ? " cavity" : " cavities")
                 << " (" << filled_volume << " mm^3) too small or thin for a drain hole of "
                 << plan_options.hole_diameter << " mm to pass cleanly through the wall "
-                << (cavity ? "is left solid" : "are left solid: the part is returned solid, undrilled")
-                << " (a smaller hole diameter may fit)";
+                << (filled_count == 1 ? "is" : "are") << " left solid"
+                << (cavity ? "" : ": the part is returned solid, undrilled") << " (a smaller hole diameter may fit)";
         result.warnings.push_back(message.str());
     }
     if (!cavity) {
