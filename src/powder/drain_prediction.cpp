@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "powder/sample_bits.h"
+#include "powder/settle_powder.h"
 #include "core/vec3_ops.h"
 
 namespace fabvdb::powder {
@@ -61,6 +62,7 @@ CavityPowder cavity_powder(const TurnSamples& samples, const HoleSetDrain& drain
 
 void predicted_turn(const TurnSamples& samples, const HoleSetDrain& drained, const CavityPowder& later, uint32_t k,
                     std::vector<double>& fill) {
+    settle_powder(samples, k, later.cavity, fill);
     const std::vector<size_t>& open = later.open[k];
     const std::vector<uint32_t>& by_rank = samples.later_chains[k].by_rank[later.cavity];
     auto powder_at = [&](size_t rank) -> double& { return fill[samples.later_local[by_rank[rank]]]; };
@@ -90,7 +92,7 @@ void predicted_turn(const TurnSamples& samples, const HoleSetDrain& drained, con
     }
 }
 
-std::vector<double> kept_in_place(const TurnSamples& samples, const HoleSetDrain& drained,
+std::vector<double> residual_after_routines(const TurnSamples& samples, const HoleSetDrain& drained,
                                   const std::vector<Routine>& routines, std::vector<double>* left,
                                   std::vector<double>* per_routine) {
     const PowderSamples& powder = *samples.powder;

@@ -1,13 +1,13 @@
 //! The prediction reported to the user (docs/design/drainability.md): after
 //! the first (as printed) turn drains what the holes drain, each later turn
-//! of a routine keeps the powder where it lies save what drains: each open
-//! hole takes the powder above its surface of repose (a sample two holes
-//! drain goes to the lower), and that powder first fills the empty rim of its
-//! crater, lowest first, before leaving. The routines are drawn once with a
+//! of a routine first lets the powder left slide down for its gravity
+//! (settle_powder.h), then each open hole takes the powder above its surface
+//! of repose (a sample two holes drain goes to the lower), and that powder
+//! first fills the empty rim of its crater, lowest first, before leaving. The routines are drawn once with a
 //! fixed seed (prediction_routines), or given (a cleaning routine).
 //! Takes what the holes drain by Crater::surface (hole_set_drain.h).
-//! Thread-safe; costs O(routines × later turns × drained samples) per cavity,
-//! the routines in parallel.
+//! Thread-safe; costs O(routines × later turns × (drained samples + the
+//! slides)) per cavity, the routines in parallel.
 #pragma once
 
 #include <cstdint>
@@ -41,7 +41,7 @@ struct CavityPowder {
 
 CavityPowder cavity_powder(const TurnSamples& samples, const HoleSetDrain& drained, uint32_t cavity);
 
-//! Later turn `k` on `fill` (powder per sample of `cavity`, 0 to 1).
+//! Later turn `k` on `fill` (powder per sample of `cavity`, 0 to 1): the slide, then the drain.
 void predicted_turn(const TurnSamples& samples, const HoleSetDrain& drained, const CavityPowder& cavity, uint32_t k,
                     std::vector<double>& fill);
 
@@ -50,7 +50,7 @@ void predicted_turn(const TurnSamples& samples, const HoleSetDrain& drained, con
 //! left on each powder sample at the end (mm³; zero on samples the later
 //! turns skip); `per_routine` (if not null) each routine's residual summed
 //! over the cavities (mm³).
-std::vector<double> kept_in_place(const TurnSamples& samples, const HoleSetDrain& drained,
+std::vector<double> residual_after_routines(const TurnSamples& samples, const HoleSetDrain& drained,
                                   const std::vector<Routine>& routines, std::vector<double>* left,
                                   std::vector<double>* per_routine);
 

@@ -30,7 +30,7 @@ DrainabilityModel::DrainabilityModel(const CavityPatches& patches, const std::ve
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the effort rho must be in [0, 1)");
     if (turns.empty()) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the orientation set is empty");
     later_turns_ = int(std::lround(options.effort / (1.0 - options.effort)));
-    samples_ = turn_samples(patches, turns, first, powder);
+    samples_ = turn_samples(patches, turns, first, powder, options.repose_radians);
     routines_ = prediction_routines(turns.size(), later_turns_);
     stand_in_.resize(patches.size());
     tbb::parallel_for(size_t(0), patches.size(), [&](size_t j) {
@@ -68,16 +68,16 @@ double DrainabilityModel::residual_with(const Drain& drain, const Reach& extra) 
 DrainEvaluation DrainabilityModel::evaluate(const std::vector<DrainHole>& holes) const { return evaluate(drain(holes)); }
 
 double DrainabilityModel::predicted_residual(const Drain& drained) const {
-    return sum(kept_in_place(samples_, drained, routines_, nullptr, nullptr));
+    return sum(residual_after_routines(samples_, drained, routines_, nullptr, nullptr));
 }
 
 double DrainabilityModel::routine_residual(const Drain& drained, const Routine& routine) const {
-    return sum(kept_in_place(samples_, drained, {routine}, nullptr, nullptr));
+    return sum(residual_after_routines(samples_, drained, {routine}, nullptr, nullptr));
 }
 
 std::vector<double> DrainabilityModel::random_routine_residuals(const Drain& drained) const {
     std::vector<double> per_routine;
-    kept_in_place(samples_, drained, routines_, nullptr, &per_routine);
+    residual_after_routines(samples_, drained, routines_, nullptr, &per_routine);
     return per_routine;
 }
 
@@ -92,7 +92,7 @@ DrainEvaluation DrainabilityModel::evaluate(const Drain& drained, const std::vec
     result.total_volume = powder_.total_volume();
     result.drained_first_volume = drained.drained_first_volume;
     std::vector<double> left;
-    result.residual_per_cavity = kept_in_place(samples_, drained, routines, &left, nullptr);
+    result.residual_per_cavity = residual_after_routines(samples_, drained, routines, &left, nullptr);
     result.residual_volume = sum(result.residual_per_cavity);
     DrainHeatMap heat_map = drain_heat_map(patches_, powder_, left, stand_in_);
     result.drained_share = std::move(heat_map.drained_share);

@@ -14,7 +14,7 @@
 //! The residuals the greedy phase compares are the model's with the
 //! crater's cone in the later turns (DrainabilityModel::Crater::cone; see
 //! hole_search.cpp for why). The prediction (the surface of repose, powder
-//! kept in place) then judges and polishes the result: it starts from
+//! sliding between turns) then judges and polishes the result: it starts from
 //! whichever of the greedy holes and the lowest-point holes (as many per
 //! cavity, baseline_holes.h) it predicts to leave less, moves each hole to
 //! the best site within half of `min_center_distance` while the prediction

@@ -4,8 +4,9 @@
 //! subsample of about 2500). Per turn: each sample's height along −gravity,
 //! the sublevel forest of those heights (where powder flows without
 //! climbing, sublevel_forest.h) and its ancestor chains as runs of ranks;
-//! for the later grid also each sample's floor height and its links to the
-//! 26 cells around it, and the first turn's forest and floors on it too.
+//! for the later grid also each sample's floor height, its links to the
+//! 26 cells around it and the links powder slides down, and the first
+//! turn's forest and floors on it too.
 //! Per sample: its cavity, its rank in its cavity. Keeps a pointer to
 //! `powder` (it must outlive the result). Costs one sublevel forest per turn
 //! (in parallel).
@@ -51,6 +52,15 @@ struct SampleRelief {
     std::vector<float> height, floor;
 };
 
+//! Where one cavity's powder slides when the part turns (settle_powder.h),
+//! over its later-turn samples by their place in TurnSamples::later_local's
+//! order: those places lowest first, and for each sample i the linked
+//! samples one step down steeper than the angle of repose, deepest first:
+//! to[begin[i]] to to[begin[i + 1] − 1].
+struct SampleSlides {
+    std::vector<uint32_t> order, begin, to;
+};
+
 struct TurnSamples {
     const PowderSamples* powder = nullptr;
     uint32_t cavity_count = 0;
@@ -66,6 +76,8 @@ struct TurnSamples {
     std::vector<SublevelForest> later_forests;
     std::vector<SampleChains> later_chains;
     std::vector<SampleRelief> later_relief;
+    //! Per later turn and cavity.
+    std::vector<std::vector<SampleSlides>> later_slides;
     //! The first turn on the later grid too (for the surface of repose), and
     //! per first-grid sample the later-grid sample nearest it (kNoSample if none).
     SublevelForest first_later_forest;
@@ -80,8 +92,9 @@ struct TurnSamples {
     std::vector<uint32_t> first_rank, later_local;
 };
 
-//! `turns`: the orientation set (non-empty); `first`: as printed.
+//! `turns`: the orientation set (non-empty); `first`: as printed;
+//! `repose_radians`: the powder's angle of repose (the slides' slope).
 TurnSamples turn_samples(const CavityPatches& patches, const std::vector<OrientationFlow>& turns,
-                         const OrientationFlow& first, const PowderSamples& powder);
+                         const OrientationFlow& first, const PowderSamples& powder, double repose_radians);
 
 }  // namespace fabvdb::powder

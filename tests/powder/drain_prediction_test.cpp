@@ -5,9 +5,13 @@
 //!   18 mm³, the lower half; routine (+z) all 36; both routines, their mean
 //!   27, 18 and 36 each, and 1 mm³ left on each lower sample, 0.5 on each
 //!   upper one.
-//! - The first turn drains the bottom layer; a later turn −z takes the top
-//!   layer (9 mm³), which first refills its rim, the empty bottom layer, so
-//!   27 mm³ stay, now in the lower three layers.
+//! - Powder left slides when the part turns: the first turn drains the
+//!   bottom layer; turned −z again, the 27 mm³ left fall a layer and the
+//!   hole takes the bottom layer once more (18 stay, in the two layers
+//!   above it); turned +z, they fall to the top.
+//! - The first turn leaves the lower two layers; a later turn −z takes the
+//!   second (9 mm³), which first refills its rim, the empty third layer, so
+//!   18 mm³ stay, in the first and third layers.
 //! - A rim sample another hole drains is not refilled.
 //! - The routines: 64 of the asked length over the set, the same each call.
 #include <gtest/gtest.h>
@@ -26,7 +30,7 @@ using fabvdb::powder::DrainHole;
 using fabvdb::powder::hole_set_drain;
 using fabvdb::powder::HoleReach;
 using fabvdb::powder::HoleSetDrain;
-using fabvdb::powder::kept_in_place;
+using fabvdb::powder::residual_after_routines;
 using fabvdb::powder::Routine;
 
 struct Block : SampleBlock {
@@ -62,31 +66,43 @@ TEST(DrainPrediction, UpperHalfDrainsWhenTheHoleOpens) {
     const Block block;
     const HoleSetDrain drained = block.drain({{}}, {ranks(18, 36)}, {{}});
     std::vector<double> left, per_routine;
-    EXPECT_DOUBLE_EQ(kept_in_place(block.samples, drained, {{0}}, nullptr, nullptr)[0], 18.0);
-    EXPECT_DOUBLE_EQ(kept_in_place(block.samples, drained, {{1}}, nullptr, nullptr)[0], 36.0);
-    EXPECT_DOUBLE_EQ(kept_in_place(block.samples, drained, {{0}, {1}}, &left, &per_routine)[0], 27.0);
+    EXPECT_DOUBLE_EQ(residual_after_routines(block.samples, drained, {{0}}, nullptr, nullptr)[0], 18.0);
+    EXPECT_DOUBLE_EQ(residual_after_routines(block.samples, drained, {{1}}, nullptr, nullptr)[0], 36.0);
+    EXPECT_DOUBLE_EQ(residual_after_routines(block.samples, drained, {{0}, {1}}, &left, &per_routine)[0], 27.0);
     EXPECT_EQ(per_routine, (std::vector<double>{18.0, 36.0}));
     for (size_t a = 0; a < left.size(); ++a)
         EXPECT_DOUBLE_EQ(left[a], block.powder.position[a][2] < 2 ? 1.0 : 0.5) << a;
 }
 
+TEST(DrainPrediction, PowderLeftSlidesDownToTheHoleWhenTurned) {
+    const Block block;
+    // The first turn drains the bottom layer; turned −z again, the 27 left
+    // fall a layer, and the hole takes the bottom layer once more.
+    const HoleSetDrain drained = block.drain({ranks(0, 9)}, {ranks(0, 9)}, {{}});
+    std::vector<double> left;
+    EXPECT_DOUBLE_EQ(residual_after_routines(block.samples, drained, {{0}}, &left, nullptr)[0], 18.0);
+    EXPECT_EQ(block.layers(left), (std::multiset<double>{1, 1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2, 2, 2, 2}));
+    // Turned +z, which drains nothing, they fall to the top.
+    EXPECT_DOUBLE_EQ(residual_after_routines(block.samples, drained, {{1}}, &left, nullptr)[0], 27.0);
+    EXPECT_EQ(block.layers(left).count(0.0), 0u);
+}
+
 TEST(DrainPrediction, DrainedPowderRefillsTheCratersRimFirst) {
     const Block block;
-    const HoleSetDrain drained = block.drain({ranks(0, 9)}, {ranks(27, 36)}, {ranks(0, 9)});
+    // The first turn leaves the lower two layers; turn −z drains the second,
+    // whose powder first fills its rim, the empty third layer.
+    const HoleSetDrain drained = block.drain({ranks(18, 36)}, {ranks(9, 18)}, {ranks(18, 27)});
     std::vector<double> left;
-    EXPECT_DOUBLE_EQ(kept_in_place(block.samples, drained, {{0}}, &left, nullptr)[0], 27.0);
-    EXPECT_EQ(block.layers(left), (std::multiset<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1,
-                                                         2, 2, 2, 2, 2, 2, 2, 2, 2}));
-    // Without the later turn the bottom layer stays empty.
-    EXPECT_DOUBLE_EQ(kept_in_place(block.samples, drained, {{1}}, &left, nullptr)[0], 27.0);
-    EXPECT_EQ(block.layers(left).count(0.0), 0u);
+    EXPECT_DOUBLE_EQ(residual_after_routines(block.samples, drained, {{0}}, &left, nullptr)[0], 18.0);
+    EXPECT_EQ(block.layers(left), (std::multiset<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 2, 2, 2, 2, 2, 2, 2, 2}));
 }
 
 TEST(DrainPrediction, ARimAnotherHoleDrainsIsNotRefilled) {
     const Block block;
-    // The second hole (lower) drains the bottom layer in turn −z.
-    const HoleSetDrain drained = block.drain({ranks(0, 9), {}}, {ranks(27, 36), ranks(0, 9)}, {ranks(0, 9), {}});
-    EXPECT_DOUBLE_EQ(kept_in_place(block.samples, drained, {{0}}, nullptr, nullptr)[0], 18.0);
+    // The second hole (lower) drains the third layer in turn −z.
+    const HoleSetDrain drained =
+        block.drain({ranks(18, 36), {}}, {ranks(9, 18), ranks(18, 27)}, {ranks(18, 27), {}});
+    EXPECT_DOUBLE_EQ(residual_after_routines(block.samples, drained, {{0}}, nullptr, nullptr)[0], 9.0);
 }
 
 TEST(DrainPrediction, RoutinesAreFixed) {

@@ -21,6 +21,9 @@ namespace fabvdb::test {
 
 using Cell = std::array<int32_t, 3>;
 
+//! The angle of repose the blocks' samples slide at: 35°.
+constexpr double kBlockRepose = 0.6108652381980153;
+
 inline powder::PowderSamples powder_block(int nx, int ny, int nz, double spacing, const std::vector<Cell>& holes = {}) {
     powder::PowderSamples powder;
     powder.spacing = spacing;
@@ -42,16 +45,17 @@ inline std::vector<powder::OrientationFlow> gravity_flows(const std::vector<Vec3
     return flows;
 }
 
-//! A block of nx × ny × nz cells 1 mm apart, printed with `first` gravity,
-//! and its samples per turn for the `later` gravities.
+//! A block of nx × ny × nz cells 1 mm apart but `holes`, printed with
+//! `first` gravity, and its samples per turn for the `later` gravities.
 struct SampleBlock {
     powder::CavityPatches patches = room_patches();
     powder::PowderSamples powder;
     std::vector<powder::OrientationFlow> first, turns;
     powder::TurnSamples samples;
-    SampleBlock(int nx, int ny, int nz, const std::vector<Vec3>& later, const Vec3& first_gravity = {0, 0, -1})
-        : powder(powder_block(nx, ny, nz, 1.0)), first(gravity_flows({first_gravity})), turns(gravity_flows(later)),
-          samples(powder::turn_samples(patches, turns, first[0], powder)) {}
+    SampleBlock(int nx, int ny, int nz, const std::vector<Vec3>& later, const Vec3& first_gravity = {0, 0, -1},
+                const std::vector<Cell>& holes = {})
+        : powder(powder_block(nx, ny, nz, 1.0, holes)), first(gravity_flows({first_gravity})), turns(gravity_flows(later)),
+          samples(powder::turn_samples(patches, turns, first[0], powder, kBlockRepose)) {}
     //! `samples` points into the block.
     SampleBlock(const SampleBlock&) = delete;
     SampleBlock& operator=(const SampleBlock&) = delete;

@@ -94,7 +94,7 @@ TEST(TurnSamples, DiagonalLinksNeverCutAWallsEdge) {
     const auto patches = room_patches();
     const auto powder = powder_block(3, 3, 1, 1.0, {{1, 0, 0}, {0, 1, 0}});
     const auto turns = gravity_flows({{0, 0, -1}});
-    const TurnSamples flat = turn_samples(patches, turns, turns[0], powder);
+    const TurnSamples flat = turn_samples(patches, turns, turns[0], powder, kBlockRepose);
     const auto& links = flat.later_links[0];  // the sample at (0, 0, 0)
     EXPECT_EQ(std::count_if(links.begin(), links.end(), [](uint32_t c) { return c != kNoSample; }), 0);
 }

@@ -1,0 +1,38 @@
+//! Powder slid down at the start of a turn (see settle_powder.h).
+#include "powder/settle_powder.h"
+
+#include <algorithm>
+
+namespace fabvdb::powder {
+
+namespace {
+
+//! Below this, a sample counts as empty or full.
+constexpr double kTiny = 1e-12;
+
+}  // namespace
+
+void settle_powder(const TurnSamples& samples, uint32_t turn, uint32_t cavity, std::vector<double>& fill) {
+    const SampleSlides& slides = samples.later_slides[turn][cavity];
+    // The deepest sample with room one slide down from `i`, kNoSample if none.
+    auto next = [&](uint32_t i) {
+        for (uint32_t s = slides.begin[i]; s < slides.begin[i + 1]; ++s)
+            if (fill[slides.to[s]] < 1.0 - kTiny) return slides.to[s];
+        return kNoSample;
+    };
+    for (uint32_t i : slides.order) {
+        double& here = fill[i];
+        while (here > kTiny) {
+            uint32_t end = next(i);
+            if (end == kNoSample) break;
+            for (uint32_t j = next(end); j != kNoSample; j = next(end)) end = j;
+            double& there = fill[end];
+            const double moved = std::min(here, 1.0 - there);
+            there += moved;
+            here -= moved;
+        }
+        if (here < kTiny) here = 0.0;
+    }
+}
+
+}  // namespace fabvdb::powder
