@@ -55,16 +55,26 @@ uint32_t nearest_vertex(const Shell& shell, const Vec3& p) {
     return best;
 }
 
-//! Connected pieces of `members` (triangles) across edges not in `blocked`.
+//! The S_low edges a cut runs along: a vertex flag to reject the other edges
+//! at once, then the edges (as sorted vertex pairs).
+struct CutEdges {
+    std::vector<char> on_cut;  //!< per S_low vertex
+    std::set<std::pair<uint32_t, uint32_t>> edges;
+    bool contains(uint32_t a, uint32_t b) const { return on_cut[a] && on_cut[b] && edges.count(std::minmax(a, b)); }
+};
+
+//! Connected pieces of `members` (triangles) across edges not in `blocked`
+//! (may be null: none), largest first.
 std::vector<std::vector<uint32_t>> pieces_of(const Shell& shell, const std::vector<uint32_t>& members,
-                                             const std::set<std::pair<uint32_t, uint32_t>>& blocked) {
+                                             const CutEdges* blocked) {
     std::vector<char> in(shell.triangle_count(), 0), seen(shell.triangle_count(), 0);
     for (uint32_t t : members) in[t] = 1;
     std::vector<std::vector<uint32_t>> pieces;
+    std::vector<uint32_t> stack;
     for (uint32_t start : members) {
         if (seen[start]) continue;
         pieces.emplace_back();
-        std::vector<uint32_t> stack{start};
+        stack.assign(1, start);
         seen[start] = 1;
         while (!stack.empty()) {
             const uint32_t t = stack.back();
@@ -73,7 +83,7 @@ std::vector<std::vector<uint32_t>> pieces_of(const Shell& shell, const std::vect
             const Triangle& f = shell.outer.triangles[t];
             for (int k = 0; k < 3; ++k) {
                 const int other = shell.neighbor[t][k];
-                if (!in[other] || seen[other] || blocked.count(std::minmax(f[k], f[(k + 1) % 3]))) continue;
+                if (!in[other] || seen[other] || (blocked && blocked->contains(f[k], f[(k + 1) % 3]))) continue;
                 seen[other] = 1;
                 stack.push_back(uint32_t(other));
             }
@@ -119,7 +129,7 @@ std::vector<int> apply_no_cut(const Shell& shell, const MoldabilityTerms& terms,
             }
     }
     if (brushed.empty()) brushed.push_back(uint32_t(nearest_triangle(shell, edit.points.front())));
-    const std::vector<uint32_t> stroke = pieces_of(shell, brushed, {}).front();
+    const std::vector<uint32_t> stroke = pieces_of(shell, brushed, nullptr).front();
     std::set<int> touched;
     for (uint32_t t : stroke) touched.insert(decomposition.part_of_triangle[t]);
     if (touched.size() < 2) return {*touched.begin()};
@@ -163,18 +173,32 @@ std::vector<int> apply_no_cut(const Shell& shell, const MoldabilityTerms& terms,
 std::vector<int> apply_cut(const Shell& shell, const MoldabilityTerms& terms, const DecompositionOptions& options,
                            const Edit& edit, const std::string& what, Decomposition& decomposition,
                            Progress& progress) {
-    // Vertex adjacency with edge lengths, for the shortest paths between snapped points.
+    // Vertex adjacency (compressed rows, each vertex's neighbours in triangle
+    // order), for the shortest paths between snapped points.
     const size_t vertex_count = shell.outer.vertices.size();
-    std::vector<std::vector<uint32_t>> around(vertex_count);
+    std::vector<uint32_t> around_start(vertex_count + 1, 0), around(3 * shell.triangle_count());
     for (const Triangle& f : shell.outer.triangles)
-        for (int k = 0; k < 3; ++k) around[f[k]].push_back(f[(k + 1) % 3]);
+        for (int k = 0; k < 3; ++k) ++around_start[f[k] + 1];
+    for (size_t v = 0; v < vertex_count; ++v) around_start[v + 1] += around_start[v];
+    {
+        std::vector<uint32_t> next(around_start.begin(), around_start.end() - 1);
+        for (const Triangle& f : shell.outer.triangles)
+            for (int k = 0; k < 3; ++k) around[next[f[k]]++] = f[(k + 1) % 3];
+    }
     std::vector<uint32_t> snapped;
     for (const Vec3& p : edit.points) snapped.push_back(nearest_vertex(shell, p));
     if (edit.closed) snapped.push_back(snapped.front());
-    std::set<std::pair<uint32_t, uint32_t>> cut_edges;
+    CutEdges cut_edges;
+    cut_edges.on_cut.assign(vertex_count, 0);
+    // Each search resets only the vertices it reached.
+    std::vector<double> distance(vertex_count, 1e300);
+    std::vector<uint32_t> previous(vertex_count, uint32_t(-1)), reached;
     for (size_t i = 0; i + 1 < snapped.size(); ++i) {
-        std::vector<double> distance(vertex_count, 1e300);
-        std::vector<uint32_t> previous(vertex_count, uint32_t(-1));
+        for (uint32_t v : reached) {
+            distance[v] = 1e300;
+            previous[v] = uint32_t(-1);
+        }
+        reached.assign(1, snapped[i]);
         using Entry = std::pair<double, uint32_t>;
         std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
         distance[snapped[i]] = 0;
@@ -184,27 +208,31 @@ std::vector<int> apply_cut(const Shell& shell, const MoldabilityTerms& terms, co
             queue.pop();
             if (v == snapped[i + 1]) break;
             if (d > distance[v]) continue;
-            for (uint32_t w : around[v]) {
+            for (uint32_t k = around_start[v]; k < around_start[v + 1]; ++k) {
+                const uint32_t w = around[k];
                 const double nd = d + norm(shell.outer.vertices[w] - shell.outer.vertices[v]);
                 if (nd < distance[w]) {
+                    if (distance[w] == 1e300) reached.push_back(w);
                     distance[w] = nd;
                     previous[w] = v;
                     queue.emplace(nd, w);
                 }
             }
         }
-        for (uint32_t v = snapped[i + 1]; v != snapped[i] && previous[v] != uint32_t(-1); v = previous[v])
-            cut_edges.insert(std::minmax(v, previous[v]));
+        for (uint32_t v = snapped[i + 1]; v != snapped[i] && previous[v] != uint32_t(-1); v = previous[v]) {
+            cut_edges.edges.insert(std::minmax(v, previous[v]));
+            cut_edges.on_cut[v] = cut_edges.on_cut[previous[v]] = 1;
+        }
     }
     std::set<int> crossed;
     for (size_t t = 0; t < shell.triangle_count(); ++t) {
         const Triangle& f = shell.outer.triangles[t];
         for (int k = 0; k < 3; ++k)
-            if (cut_edges.count(std::minmax(f[k], f[(k + 1) % 3]))) crossed.insert(decomposition.part_of_triangle[t]);
+            if (cut_edges.contains(f[k], f[(k + 1) % 3])) crossed.insert(decomposition.part_of_triangle[t]);
     }
     std::vector<int> touched, former_direction;  // each piece and the direction of the part it came from
     for (int p : crossed) {
-        const auto pieces = pieces_of(shell, triangles_of_part(decomposition, p), cut_edges);
+        const auto pieces = pieces_of(shell, triangles_of_part(decomposition, p), &cut_edges);
         if (pieces.size() < 2) continue;
         touched.push_back(p);
         former_direction.push_back(decomposition.parts[p].direction);
@@ -217,9 +245,12 @@ std::vector<int> apply_cut(const Shell& shell, const MoldabilityTerms& terms, co
         }
     }
     if (touched.empty()) throw Error(FABVDB_ERR_BAD_INPUT, what + ": the cut does not separate any part");
-    for (size_t i = 0; i < touched.size(); ++i)
+    // The pieces side by side: a small one (the patch inside a closed cut)
+    // then takes the other core while the large one starts.
+    tbb::parallel_for(size_t(0), touched.size(), [&](size_t i) {
         decomposition.parts[touched[i]] = best_parting_line(shell, terms, decomposition.part_of_triangle, touched[i],
                                                             options.weights, {former_direction[i]}, progress);
+    });
     return touched;
 }
 

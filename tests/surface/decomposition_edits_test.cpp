@@ -1,6 +1,7 @@
 // Edits of a mold decomposition on the shared sphere (thesis §3.5): a closed
 // cut adds a part, a merge removes one, a no-cut stroke across a boundary
-// moves the boundary out of the stroke, a smooth stroke straightens the
+// moves the boundary out of the stroke, each piece of a cut gets the
+// parting line best_parting_line gives it alone, a smooth stroke straightens the
 // boundary under it and moves no vertex outside it, and parts an edit does
 // not touch keep exactly their triangles, direction and energy. Triangle sets are compared as sets;
 // the stroke and cap regions are measured geometrically in the test.
@@ -83,6 +84,26 @@ Edit cap_cut(const Sphere& s, const Vec3& axis, double angle) {
         cut.points.push_back(on_sphere(s, axis, std::cos(phi) * u + std::sin(phi) * v, angle));
     }
     return cut;
+}
+
+TEST(DecompositionEdits, EachPieceOfACutGetsItsBestPartingLine) {
+    // The pieces are labelled side by side; each must be what
+    // best_parting_line gives it alone, with the cut part's direction as hint.
+    const Sphere& s = sphere();
+    Shell shell = s.result.shell;
+    MoldabilityTerms terms = s.result.terms;
+    Progress progress;
+    Decomposition d = s.result.decomposition;
+    const int former = d.parts[0].direction;
+    const nlohmann::json record = apply_edit(shell, terms, {}, cap_cut(s, axis_of(s, d, 0), 0.6), 0, d, progress);
+    ASSERT_EQ(d.parts.size(), 3u);
+    EXPECT_EQ(record["parts_touched"], nlohmann::json({0, 2}));
+    for (int p : {0, 2}) {
+        const PartMolding alone = best_parting_line(shell, terms, d.part_of_triangle, p, {}, {former}, progress);
+        EXPECT_EQ(d.parts[size_t(p)].direction, alone.direction) << "part " << p;
+        EXPECT_EQ(d.parts[size_t(p)].energy.total, alone.energy.total) << "part " << p;
+        EXPECT_EQ(d.parts[size_t(p)].upper, alone.upper) << "part " << p;
+    }
 }
 
 TEST(DecompositionEdits, CutAddsAPartAndMergeRemovesItTouchingNothingElse) {
