@@ -3,9 +3,9 @@
 #include "surface/parting_line.h"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <tuple>
-#include <queue>
 
 // Boost.Graph's edge iterators trip GCC's -Wmaybe-uninitialized (false positive).
 #pragma GCC diagnostic push
@@ -154,23 +154,28 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
             }
         }
     }
+    // Each triangle's projected area, in one pass in memory order (the
+    // component walk below reads it in walk order).
+    std::vector<double> projected_area(n);
+    for (size_t i = 0; i < n; ++i) projected_area[i] = s.area[i] * std::abs(dot(s.normal[i], d));
     // Connected components of the four classes (patch × overlap).
     std::vector<int> component(n, -1);
     std::vector<char> label;
     std::vector<double> projected, outer_projected;
+    std::vector<uint32_t> stack;
     for (size_t start = 0; start < n; ++start) {
         if (component[start] >= 0) continue;
         const int c = int(label.size());
         label.push_back(upper[start]);
         projected.push_back(0);
         outer_projected.push_back(0);
-        std::vector<uint32_t> stack{uint32_t(start)};
+        stack.assign(1, uint32_t(start));
         component[start] = c;
         while (!stack.empty()) {
             const uint32_t i = stack.back();
             stack.pop_back();
-            projected[c] += s.area[i] * std::abs(dot(s.normal[i], d));
-            if (s.kind[i] == PartSurface::outer) outer_projected[c] += s.area[i] * std::abs(dot(s.normal[i], d));
+            projected[c] += projected_area[i];
+            if (s.kind[i] == PartSurface::outer) outer_projected[c] += projected_area[i];
             for (uint32_t j : s.adjacent(i))
                 if (component[j] < 0 && upper[j] == upper[start] && overlapping[j] == overlapping[start]) {
                     component[j] = c;
@@ -206,17 +211,20 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
     // Cheapest path from root[side] to `target`: entering a node of the other
     // label costs its projected area; fixed nodes of the other label block.
     // The search stops when the target is settled (its path is then final).
+    // (The queue is a binary heap on one reused vector, as std::priority_queue keeps it.)
+    using Entry = std::pair<double, int>;
+    std::vector<Entry> queue;
     const auto search = [&](int side, int target, std::vector<double>& distance, std::vector<int>& previous) {
         distance.assign(count, 1e300);
         previous.assign(count, -1);
         if (root[side] < 0) return;
-        using Entry = std::pair<double, int>;
-        std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+        const std::greater<Entry> later;
+        queue.assign(1, Entry(0.0, root[side]));
         distance[root[side]] = 0;
-        queue.emplace(0.0, root[side]);
         while (!queue.empty()) {
-            const auto [dist, c] = queue.top();
-            queue.pop();
+            std::pop_heap(queue.begin(), queue.end(), later);
+            const auto [dist, c] = queue.back();
+            queue.pop_back();
             if (dist > distance[c]) continue;
             if (c == target) return;
             for (int next : links[c]) {
@@ -226,7 +234,8 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
                 if (w < distance[next]) {
                     distance[next] = w;
                     previous[next] = c;
-                    queue.emplace(w, next);
+                    queue.emplace_back(w, next);
+                    std::push_heap(queue.begin(), queue.end(), later);
                 }
             }
         }
@@ -295,9 +304,18 @@ namespace {
 //! along the axis, since facing pairs then share a label).
 std::vector<int> ranked_candidates(const Shell& shell, const MoldabilityTerms& terms, const PartSurface& surface,
                                    size_t count) {
-    std::vector<char> in_part(shell.triangle_count(), 0);
-    for (size_t i = 0; i < surface.size(); ++i)
-        if (surface.kind[i] == PartSurface::outer) in_part[surface.source[i]] = 1;
+    // The visible (outer and side) triangles and the outer ones' S_low
+    // triangles, in surface order (so each sum adds in the same order).
+    std::vector<uint32_t> visible, outer;
+    std::vector<double> in_part(shell.triangle_count(), 0.0);  // 1 or 0, a factor (no branch to mispredict)
+    for (size_t i = 0; i < surface.size(); ++i) {
+        if (surface.kind[i] == PartSurface::inner) continue;
+        visible.push_back(uint32_t(i));
+        if (surface.kind[i] == PartSurface::outer) {
+            outer.push_back(surface.source[i]);
+            in_part[surface.source[i]] = 1.0;
+        }
+    }
     // One direction per axis, each estimated independently (in parallel).
     std::vector<int> axis_directions;
     for (size_t d = 0; d < terms.directions.directions.size(); ++d)
@@ -311,17 +329,16 @@ std::vector<int> ranked_candidates(const Shell& shell, const MoldabilityTerms& t
         // The lesser overhang is zero unless the triangle is within the draft
         // angle of parallel to the axis (|n·d| < sin φ).
         const double within_draft = std::sin(terms.draft);
-        for (size_t i = 0; i < surface.size(); ++i)
-            if (surface.kind[i] != PartSurface::inner && std::abs(dot(surface.normal[i], dir)) < within_draft)
+        for (uint32_t i : visible)
+            if (std::abs(dot(surface.normal[i], dir)) < within_draft)
                 e += std::min(overhang_term(surface.normal[i], surface.area[i], dir, terms.draft),
                               overhang_term(surface.normal[i], surface.area[i], -1.0 * dir, terms.draft));
-        const auto& o = terms.overlaps[axis];
-        for (size_t i = 0; i < surface.size(); ++i) {
-            if (surface.kind[i] != PartSurface::outer) continue;
-            const uint32_t t = surface.source[i];
-            for (uint32_t k = o.offset[t]; k < o.offset[t + 1]; ++k)
-                if (in_part[o.partner[k]]) e += 0.5 * o.area[k];
-        }
+        // Adding 0 for a partner outside the part leaves the sum as it is.
+        const uint32_t* offset = terms.overlaps[axis].offset.data();
+        const uint32_t* partner = terms.overlaps[axis].partner.data();
+        const float* area = terms.overlaps[axis].area.data();
+        for (uint32_t t : outer)
+            for (uint32_t k = offset[t]; k < offset[t + 1]; ++k) e += in_part[partner[k]] * (0.5 * area[k]);
         estimate[a] = {e, d};
     });
     count = std::min(count, estimate.size());

@@ -3,10 +3,12 @@
 //! the lower in M⁻, each one connected piece, and the part is moldable (no
 //! overhang or overlap beyond the band of triangles at the equator). Along
 //! +x the cut turns with the direction. best_parting_line finds an axis for
-//! which the sphere is as moldable. A part's network kept while vertices move
+//! which the sphere is as moldable, and over all 81 axes exactly the lowest
+//! of their parting lines (a half sphere: sides, an inner surface). A part's network kept while vertices move
 //! relabels as a parting line computed from scratch on the moved shell.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <queue>
 
@@ -101,6 +103,27 @@ TEST(PartingLine, BestAxisOfASphereIsAsGoodAsAny) {
         sphere.shell, sphere.terms, sphere.one_part, 0, {}, {}, sphere.progress, 81);
     EXPECT_LE(best.energy.total, along_z + 1e-12);
     expect_split_along(sphere, best, sphere.terms.directions.directions[best.direction]);
+}
+
+TEST(PartingLine, BestOfAllAxesIsTheArgminOfTheirPartingLines) {
+    // A half sphere (a part with sides and an inner surface, so the fix-up
+    // has components to join): checking all 81 axes gives exactly the
+    // lowest of their parting lines.
+    Sphere sphere;
+    std::vector<int> halves(sphere.shell.triangle_count());
+    for (size_t t = 0; t < halves.size(); ++t) halves[t] = sphere.shell.normal[t][0] + 0.3 * sphere.shell.normal[t][2] > 0;
+    const fabvdb::surface::PartMolding best =
+        fabvdb::surface::best_parting_line(sphere.shell, sphere.terms, halves, 1, {}, {}, sphere.progress, 81);
+    double lowest = 1e300;
+    for (size_t d = 0; d < sphere.terms.directions.directions.size(); ++d) {
+        if (sphere.terms.axes[size_t(sphere.terms.axis_of_direction[d])] != sphere.terms.directions.directions[d])
+            continue;
+        const fabvdb::surface::PartMolding one =
+            fabvdb::surface::parting_line(sphere.shell, sphere.terms, halves, 1, int(d), {});
+        lowest = std::min(lowest, one.energy.total);
+        if (int(d) == best.direction) EXPECT_EQ(one.upper, best.upper);
+    }
+    EXPECT_EQ(best.energy.total, lowest);
 }
 
 TEST(PartingLine, AKeptNetworkFollowsMovedVertices) {
