@@ -13,14 +13,17 @@ constexpr double kTiny = 1e-12;
 }  // namespace
 
 void settle_powder(const TurnSamples& samples, uint32_t turn, uint32_t cavity, std::vector<double>& fill) {
-    const SampleSlides& slides = samples.later_slides[turn][cavity];
+    const SampleSlides& slides = samples.later_slides[turn];
+    const std::vector<std::array<uint32_t, 26>>& links = samples.later_local_links[cavity];
     // The deepest sample with room one slide down from `i`, kNoSample if none.
     auto next = [&](uint32_t i) {
-        for (uint32_t s = slides.begin[i]; s < slides.begin[i + 1]; ++s)
-            if (fill[slides.to[s]] < 1.0 - kTiny) return slides.to[s];
+        for (uint8_t d : slides.steps) {
+            const uint32_t j = links[i][d];
+            if (j != kNoSample && fill[j] < 1.0 - kTiny) return j;
+        }
         return kNoSample;
     };
-    for (uint32_t i : slides.order) {
+    for (uint32_t i : slides.order[cavity]) {
         double& here = fill[i];
         while (here > kTiny) {
             uint32_t end = next(i);

@@ -66,36 +66,33 @@ SampleRelief later_relief(const TurnSamples& samples, const Vec3& gravity) {
     return result;
 }
 
-//! Per cavity, the slides of turn `k` (its forest and chains already built).
-std::vector<SampleSlides> later_slides(const TurnSamples& samples, size_t k, double repose_radians) {
+//! The slides of turn `k` (its chains already built).
+SampleSlides later_slides(const TurnSamples& samples, size_t k, double repose_radians) {
     const double steep = std::sin(repose_radians);
     const Vec3& gravity = samples.later_gravity[k];
-    std::vector<std::pair<double, size_t>> steps;  // (drop, link)
-    for (size_t d = 0; d < 26; ++d) {
+    std::vector<std::pair<double, uint8_t>> steps;  // (drop, link)
+    for (uint8_t d = 0; d < 26; ++d) {
         const Vec3 step{double(kLinkOffsets[d][0]), double(kLinkOffsets[d][1]), double(kLinkOffsets[d][2])};
         const double drop = dot(step, gravity);
         if (drop >= steep * std::sqrt(dot(step, step))) steps.push_back({drop, d});
     }
     std::sort(steps.begin(), steps.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    SampleSlides result;
+    for (const auto& step : steps) result.steps.push_back(step.second);
+    result.order.resize(samples.cavity_count);
+    for (uint32_t c = 0; c < samples.cavity_count; ++c)
+        for (uint32_t sample : samples.later_chains[k].by_rank[c]) result.order[c].push_back(samples.later_local[sample]);
+    return result;
+}
+
+std::vector<std::vector<std::array<uint32_t, 26>>> local_links(const TurnSamples& samples) {
     const SampleGrid& grid = samples.later_grid;
-    auto place = [&](uint32_t a) { return samples.later_local[grid.sample[a]]; };
-    // The grid sample at each place, per cavity.
-    std::vector<std::vector<uint32_t>> at(samples.cavity_count);
-    for (uint32_t c = 0; c < samples.cavity_count; ++c) at[c].resize(samples.later_count[c]);
-    for (uint32_t a = 0; a < grid.size(); ++a) at[samples.later_cavity[a]][place(a)] = a;
-    std::vector<SampleSlides> result(samples.cavity_count);
-    for (uint32_t c = 0; c < samples.cavity_count; ++c) {
-        SampleSlides& slides = result[c];
-        for (uint32_t sample : samples.later_chains[k].by_rank[c]) slides.order.push_back(samples.later_local[sample]);
-        slides.begin.reserve(at[c].size() + 1);
-        slides.begin.push_back(0);
-        for (uint32_t a : at[c]) {
-            for (const auto& step : steps) {
-                const uint32_t b = samples.later_links[a][step.second];
-                if (b != kNoSample) slides.to.push_back(place(b));
-            }
-            slides.begin.push_back(uint32_t(slides.to.size()));
-        }
+    auto place = [&](uint32_t a) { return a == kNoSample ? kNoSample : samples.later_local[grid.sample[a]]; };
+    std::vector<std::vector<std::array<uint32_t, 26>>> result(samples.cavity_count);
+    for (uint32_t c = 0; c < samples.cavity_count; ++c) result[c].resize(samples.later_count[c]);
+    for (uint32_t a = 0; a < grid.size(); ++a) {
+        std::array<uint32_t, 26>& links = result[samples.later_cavity[a]][place(a)];
+        for (size_t d = 0; d < 26; ++d) links[d] = place(samples.later_links[a][d]);
     }
     return result;
 }
@@ -179,6 +176,7 @@ TurnSamples turn_samples(const CavityPatches& patches, const std::vector<Orienta
         for (size_t i = 0; i < samples.size(); ++i) result.later_local[samples[i]] = uint32_t(i);
     tbb::parallel_for(size_t(0), turns.size(),
                       [&](size_t k) { result.later_slides[k] = later_slides(result, k, repose_radians); });
+    result.later_local_links = local_links(result);
     return result;
 }
 

@@ -52,13 +52,13 @@ struct SampleRelief {
     std::vector<float> height, floor;
 };
 
-//! Where one cavity's powder slides when the part turns (settle_powder.h),
-//! over its later-turn samples by their place in TurnSamples::later_local's
-//! order: those places lowest first, and for each sample i the linked
-//! samples one step down steeper than the angle of repose, deepest first:
-//! to[begin[i]] to to[begin[i + 1] − 1].
+//! Where powder slides in one later turn (settle_powder.h): the links
+//! (kLinkOffsets) one step down steeper than the angle of repose, deepest
+//! first, and per cavity its later-turn samples' places in
+//! TurnSamples::later_local's order, lowest first.
 struct SampleSlides {
-    std::vector<uint32_t> order, begin, to;
+    std::vector<uint8_t> steps;
+    std::vector<std::vector<uint32_t>> order;
 };
 
 struct TurnSamples {
@@ -76,8 +76,10 @@ struct TurnSamples {
     std::vector<SublevelForest> later_forests;
     std::vector<SampleChains> later_chains;
     std::vector<SampleRelief> later_relief;
-    //! Per later turn and cavity.
-    std::vector<std::vector<SampleSlides>> later_slides;
+    std::vector<SampleSlides> later_slides;
+    //! Per cavity, per later-turn sample by its place in later_local's
+    //! order: the places of the samples it links to (later_links).
+    std::vector<std::vector<std::array<uint32_t, 26>>> later_local_links;
     //! The first turn on the later grid too (for the surface of repose), and
     //! per first-grid sample the later-grid sample nearest it (kNoSample if none).
     SublevelForest first_later_forest;
