@@ -402,7 +402,7 @@ def write_tables(args, rows, selected):
                 failures.append((rec["model"], c, cellv))
     doc = {"generated": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
            "recipe": {"fit_mm": FIT_MM, "wall_mm": WALL_MM, "holes": "auto", "time_cap_s": args.time_cap,
-                      "mem_cap": args.mem_cap, "subset": args.subset},
+                      "mem_cap": args.mem_cap, "subset": args.subset, "molds": not args.no_molds},
            "summary": summary, "models": records}
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump(doc, f, indent=1)
@@ -456,6 +456,9 @@ def main():
     p.add_argument("--subset", choices=["all", "smallest20"], default="all",
                    help="all: every mesh (decompose+mold on the 40 of the mold rule); smallest20: the 20 meshes "
                    "with the fewest triangles, every command on each")
+    p.add_argument("--no-molds", action="store_true",
+                   help="run neither decompose nor mold (the ctest of the fast subset: info, repair, hollow, "
+                   "drain and powder-sim)")
     p.add_argument("--only", nargs="*", help="rerun just these models (their rows are refreshed)")
     p.add_argument("--jobs", type=int, default=2, help="models run at once")
     p.add_argument("--time-cap", type=int, default=120, help="seconds per command run")
@@ -476,6 +479,8 @@ def main():
     else:
         selected_rows = rows
         mold_set = mold_selection(rows)
+    if args.no_molds:
+        mold_set = set()
     selected = {r["file"] for r in selected_rows}
     # Smallest first, so an interrupted run has covered the most models.
     todo = sorted((r for r in selected_rows if not args.only or r["file"] in args.only),
