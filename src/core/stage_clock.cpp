@@ -14,6 +14,11 @@ double StageClock::lap(const std::string& stage) {
     return lap;
 }
 
+void StageClock::add_laps(const std::map<std::string, double>& stages) {
+    for (const auto& [stage, seconds] : stages) seconds_[stage] += seconds;
+    since_ = std::chrono::steady_clock::now();
+}
+
 double StageClock::total() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }

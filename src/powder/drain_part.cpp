@@ -1,7 +1,6 @@
 //! `fabvdb drain` on a mesh (see drain_part.h).
 #include "powder/drain_part.h"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include <openvdb/tools/MeshToVolume.h>
 
 #include "core/error.h"
+#include "core/stage_clock.h"
 #include "surface/mesh_topology.h"
 #include "surface/signed_volume.h"
 #include "volume/drill_holes.h"
@@ -109,12 +109,7 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
     if (input.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangles");
     openvdb::initialize();
     DrainPartResult result;
-    auto last = std::chrono::steady_clock::now();
-    auto lap = [&](const std::string& name) {
-        const auto now = std::chrono::steady_clock::now();
-        result.timings[name] += std::chrono::duration<double>(now - last).count();
-        last = now;
-    };
+    StageClock clock(result.timings);
     const double voxel = options.voxel_size > 0.0 ? options.voxel_size : volume::automatic_hollow_voxel(options.wall);
     result.voxel_size = voxel;
 
@@ -127,7 +122,7 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         distance.memory_budget_bytes = options.memory_budget_bytes;
         distance.input_name = options.input_name;
         shells_mesh = volume::extract_mesh(*volume::signed_distance_from_mesh(input, distance, progress), 0.0, progress);
-        lap("signed distance");
+        clock.lap("signed distance");
     } else {
         volume::HollowOptions hollow;
         hollow.wall = options.wall;
@@ -137,7 +132,7 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         volume::HollowResult hollowed = volume::hollow(input, hollow, progress);
         shells_mesh = std::move(hollowed.mesh);
         result.warnings = std::move(hollowed.warnings);
-        lap("hollow");
+        clock.lap("hollow");
     }
     progress.stage("level sets");
     const Shells shells = split_shells(shells_mesh);
@@ -166,10 +161,9 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
     for (;;) {
         result.shell = openvdb::tools::csgDifferenceCopy(*part, *cavity);
         progress.check();
-        lap("level sets");
+        clock.lap("level sets");
         result.plan = plan_drain_holes(*part, *cavity, *result.shell, plan_options, progress);
-        for (const auto& [name, seconds] : result.plan.timings) result.timings[name] += seconds;
-        last = std::chrono::steady_clock::now();
+        clock.add_laps(result.plan.timings);
         if (result.plan.cavities_without_site.empty()) break;
         cavity = fill_cavities_at(*cavity, result.plan.cavities_without_site, filled_count, filled_volume);
         if (!cavity) break;
@@ -203,9 +197,9 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         cylinders.push_back(cylinder);
     }
     const openvdb::FloatGrid::Ptr drilled = volume::drill_holes(*result.shell, cylinders, progress);
-    lap("drill");
+    clock.lap("drill");
     result.drilled = volume::extract_mesh(*drilled, 0.0, progress);
-    lap("extract");
+    clock.lap("extract");
     return result;
 }
 

@@ -1,6 +1,7 @@
 // StageClock: each lap adds the time since the previous lap (or since the
 // clock was made) to its stage, repeated stages add up, laps sum to at most the
-// total, and the map passed in is the one written.
+// total, the map passed in is the one written, and stages added from another
+// clock stand in for the time since the previous lap.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -74,6 +75,20 @@ TEST(StageClock, AddsToTimesAlreadyInTheMap) {
     EXPECT_GE(lap, 0.0);
     EXPECT_DOUBLE_EQ(seconds.at("read"), 100.0 + lap);
     EXPECT_EQ(seconds.at("other"), 7.0);
+}
+
+TEST(StageClock, AddedLapsCountInPlaceOfTheTimeSinceThePreviousLap) {
+    std::map<std::string, double> seconds;
+    StageClock clock(seconds);
+    std::this_thread::sleep_for(30ms);  // a step that times itself
+    clock.add_laps({{"plan", 0.25}, {"read", 0.5}});
+    clock.add_laps({{"plan", 0.25}});
+    const double lap = clock.lap("drill");
+    EXPECT_DOUBLE_EQ(seconds.at("plan"), 0.5);
+    EXPECT_DOUBLE_EQ(seconds.at("read"), 0.5);
+    // The drill's lap starts at the last add_laps, not before the step.
+    EXPECT_LT(lap, 0.030);
+    EXPECT_EQ(seconds.at("drill"), lap);
 }
 
 TEST(StageClock, AnImmediateLapIsTinyButNotNegative) {
