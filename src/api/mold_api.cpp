@@ -169,6 +169,7 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         }
         report["mean_distance_ratio"] = result.mean_distance / result.diagonal;
         report["hausdorff_ratio"] = result.max_distance / result.diagonal;
+        report["lost_triangles"] = result.lost_triangles;
         report["timings"] = result.seconds;
         if (!decomposition_path) report["timings"]["decomposition"] = own_stages["decomposition"];
         report["timings"]["write"] = clock.lap("write");

@@ -12,6 +12,7 @@
 #include "volume/detail_restoration.h"
 #include "volume/double_height_field_mesh.h"
 #include "volume/hand_over_runs.h"
+#include "volume/keep_lost_surface.h"
 #include "volume/signed_distance.h"
 #include "volume/sweep.h"
 
@@ -95,6 +96,21 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     restoration.input_name = options.input_name;
     std::vector<openvdb::FloatGrid::Ptr> restored =
         volume::restore_part_details(*input_grid, solids, restoration, progress);
+    // Input surface no restored part holds (fins, sheets and tips thinner
+    // than a voxel, or left so by the split between two parts) comes back a
+    // voxel thick in the part nearest to it, if within δ of it as restoration
+    // reaches; a voxel out is within the level sets' own rounding of sharp
+    // edges (bench/corpus: panther, uccello200, issue1580-back-to-back,
+    // decimated-knight, mat_test).
+    volume::KeepLostSurfaceOptions keep;
+    keep.tolerance = result.voxel_size;
+    keep.radius = result.voxel_size;
+    keep.reach = restoration.reach;
+    keep.solid = input_grid.get();
+    keep.half_band_voxels = distance.half_band_voxels;
+    volume::LostSurface lost;
+    restored = volume::keep_lost_surface(restored, input, keep, progress, &lost);
+    result.lost_triangles = lost.lost_triangles;
     clock.lap("detail restoration");
 
     // Small gaps closed by deformation before anything is swept; each part's

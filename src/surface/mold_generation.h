@@ -1,7 +1,9 @@
 //! Mold generation for a decomposed model (thesis §3.6): for every part of
 //! the decomposition, in order,
 //!  1. detail restoration: its outer surface back from the full-resolution
-//!     input's level set (volume/detail_restoration.h);
+//!     input's level set (volume/detail_restoration.h); input surface no
+//!     restored part holds (thinner than a voxel) back as tubes a voxel
+//!     thick in the nearest part (volume/keep_lost_surface.h);
 //!  2. moldability enforcement: small gaps along the parting direction closed
 //!     by ARAP deformation (overhang_deformation.h), then the part swept into a double height field
 //!     along its parting direction, the added volume kept out of the other
@@ -81,6 +83,9 @@ struct MoldGeneration {
     double diagonal = 0;          //!< of the input's bounding box, mm
     double mean_distance = 0;     //!< mm, input vertices to the nearest part surface
     double max_distance = 0;
+    //! Input triangles with surface the input's level set lost (thinner than
+    //! a voxel), kept in a tube a voxel thick (volume/keep_lost_surface.h).
+    size_t lost_triangles = 0;
     std::map<std::string, double> seconds;  //!< per stage
 };
 
