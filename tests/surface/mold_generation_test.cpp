@@ -2,7 +2,8 @@
 // two parts: every cast part and mold piece checked by the test support's own
 // ray casting, edge pairing and CGAL predicates (support/mold_checks.h), the
 // parts disjoint and reproducing the input (distances measured here by brute
-// force), and bad decompositions refused with a message naming the defect.
+// force), a fin thinner than a voxel cast all the same, and bad
+// decompositions refused with a message naming the defect.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -129,6 +130,42 @@ TEST_F(MoldGeneration, PartsAreDisjointAndReproduceTheInput) {
     EXPECT_LT(mean, 0.2 * voxel);
     EXPECT_LT(largest, 1.5 * voxel);
     EXPECT_NEAR(molds_->mean_distance, mean, 0.01 * diagonal);
+}
+
+TEST(MoldGenerationThinFin, AFinThinnerThanAVoxelIsCast) {
+    // A fin 0.3 mm thick standing 3 mm off the sphere along (1, 1, 0), within
+    // the sphere's bounding box, where no voxel centre is inside it (x − y
+    // is 1 mm off a multiple of the voxel): the level sets have none of it,
+    // yet its outer edge must lie within two voxels of the cast parts.
+    openvdb::initialize();
+    Mesh fin = fabvdb::test::make_box({16, -0.15, -3}, {23, 0.15, 3});
+    const double h = std::sqrt(0.5);
+    for (Vec3& p : fin.vertices) p = {1 + h * (p[0] + p[1]), 2 + h * (p[0] - p[1]), 3 + p[2]};
+    const Mesh input = fabvdb::test::merged(fabvdb::test::make_sphere({1, 2, 3}, 20.0, 4), fin);
+    fabvdb::Progress progress;
+    fabvdb::surface::DecomposeSettings settings;
+    settings.shell.target_triangles = 1500;
+    settings.shell.thickness = 3.0;
+    settings.decomposition.parts = 2;
+    const auto result = fabvdb::surface::decompose_mesh(input, settings, {}, progress);
+    const auto document = fabvdb::surface::decomposition_document(result.shell, result.terms, result.decomposition,
+                                                                  settings.decomposition);
+    const auto model = fabvdb::surface::decomposed_parts(document, "fin.json", input);
+    fabvdb::surface::MoldGenerationOptions options;
+    options.voxel_size = voxel;
+    options.mold.margin = 6.0;
+    options.mold.grid_step = 1.5;
+    const auto molds = fabvdb::surface::generate_molds(input, model, options, progress);
+    EXPECT_GT(molds.lost_triangles, 0u);
+    for (const Vec3& p : fin.vertices) {
+        if (std::hypot(p[0] - 1, p[1] - 2) < 22) continue;
+        double nearest = 1e300;
+        for (const auto& cast : molds.parts)
+            for (const auto& t : cast.part.triangles)
+                nearest = std::min(nearest, point_triangle_distance(p, cast.part.vertices[t[0]],
+                                                                    cast.part.vertices[t[1]], cast.part.vertices[t[2]]));
+        EXPECT_LT(nearest, 2 * voxel) << p[0] << " " << p[1] << " " << p[2];
+    }
 }
 
 void expect_refused(const nlohmann::json& document, const Mesh& input, const std::string& defect) {
