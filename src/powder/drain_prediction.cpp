@@ -93,8 +93,8 @@ void predicted_turn(const TurnSamples& samples, const HoleSetDrain& drained, con
 }
 
 std::vector<double> residual_after_routines(const TurnSamples& samples, const HoleSetDrain& drained,
-                                  const std::vector<Routine>& routines, std::vector<double>* left,
-                                  std::vector<double>* per_routine) {
+                                            const std::vector<Routine>& routines, std::vector<double>* left,
+                                            std::vector<double>* per_routine) {
     const PowderSamples& powder = *samples.powder;
     std::vector<double> residual(samples.cavity_count, 0.0);
     if (left) left->assign(powder.position.size(), 0.0);

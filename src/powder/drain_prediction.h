@@ -51,7 +51,7 @@ void predicted_turn(const TurnSamples& samples, const HoleSetDrain& drained, con
 //! turns skip); `per_routine` (if not null) each routine's residual summed
 //! over the cavities (mm³).
 std::vector<double> residual_after_routines(const TurnSamples& samples, const HoleSetDrain& drained,
-                                  const std::vector<Routine>& routines, std::vector<double>* left,
-                                  std::vector<double>* per_routine);
+                                            const std::vector<Routine>& routines, std::vector<double>* left,
+                                            std::vector<double>* per_routine);
 
 }  // namespace fabvdb::powder

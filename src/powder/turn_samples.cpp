@@ -85,6 +85,7 @@ SampleSlides later_slides(const TurnSamples& samples, size_t k, double repose_ra
     return result;
 }
 
+//! later_links by place in the cavity (TurnSamples::later_local_links).
 std::vector<std::vector<std::array<uint32_t, 26>>> local_links(const TurnSamples& samples) {
     const SampleGrid& grid = samples.later_grid;
     auto place = [&](uint32_t a) { return a == kNoSample ? kNoSample : samples.later_local[grid.sample[a]]; };
