@@ -10,23 +10,19 @@
 #include <tbb/parallel_for.h>
 
 #include <openvdb/tools/Interpolation.h>
-#include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/Morphology.h>
 
 #include "core/error.h"
-#include "volume/progress_interrupter.h"
+#include "core/vec3_ops.h"
 #include "volume/rebuild_band.h"
 #include "volume/require_level_set.h"
+#include "volume/unsigned_band.h"
 
 namespace fabvdb::volume {
 
 namespace {
 
 using Sampler = openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler>;
-
-double distance(const Vec3& a, const Vec3& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
 
 // One part's lost samples: the voxels they lie in and the triangles they lie on.
 struct Lost {
@@ -45,20 +41,11 @@ openvdb::FloatGrid::Ptr tube(const Lost& lost, const Mesh& input, const openvdb:
     }
     openvdb::tools::dilateActiveValues(mask.tree(), reach, openvdb::tools::NN_FACE_EDGE_VERTEX,
                                        openvdb::tools::IGNORE_TILES);
-    std::vector<openvdb::Vec3s> points(input.vertices.size());
-    for (size_t i = 0; i < points.size(); ++i)
-        points[i] = openvdb::Vec3s(transform.worldToIndex(
-            openvdb::Vec3d(input.vertices[i][0], input.vertices[i][1], input.vertices[i][2])));
-    std::vector<openvdb::Vec3I> triangles;
+    Mesh lost_mesh;
+    lost_mesh.vertices = input.vertices;
     for (size_t t = 0; t < input.triangles.size(); ++t)
-        if (lost.triangles[t])
-            triangles.emplace_back(input.triangles[t][0], input.triangles[t][1], input.triangles[t][2]);
-    openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
-    ProgressInterrupter interrupter(progress);
-    const float band = float(reach + 1);
-    openvdb::FloatGrid::Ptr grid = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
-        interrupter, adapter, transform, band, band, openvdb::tools::UNSIGNED_DISTANCE_FIELD);
-    progress.check();
+        if (lost.triangles[t]) lost_mesh.triangles.push_back(input.triangles[t]);
+    openvdb::FloatGrid::Ptr grid = unsigned_band(lost_mesh, transform, float(reach + 1), progress);
     const auto in_mask = mask.getConstAccessor();
     for (auto v = grid->beginValueOn(); v; ++v) {
         if (in_mask.isValueOn(v.getCoord()))
@@ -123,7 +110,7 @@ std::vector<openvdb::FloatGrid::Ptr> keep_lost_surface(const std::vector<openvdb
             const Vec3& a = input.vertices[input.triangles[t][0]];
             const Vec3& b = input.vertices[input.triangles[t][1]];
             const Vec3& c = input.vertices[input.triangles[t][2]];
-            const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
+            const double longest = std::max({norm(b - a), norm(c - b), norm(a - c)});
             const int steps = std::max(1, int(std::ceil(longest / spacing)));
             for (int i = 0; i <= steps; ++i)
                 for (int j = 0; i + j <= steps; ++j) {

@@ -37,6 +37,7 @@
 #include "volume/orient_soup.h"
 #include "volume/progress_interrupter.h"
 #include "volume/rebuild_band.h"
+#include "volume/unsigned_band.h"
 #include "volume/winding_number.h"
 
 namespace fabvdb::volume {
@@ -81,26 +82,6 @@ void check_budget(double area, const SignedDistanceOptions& options, SignedDista
             << " mm (budget " << double(options.memory_budget_bytes) / double(1ull << 30) << " GiB); --voxel "
             << voxel_size_for_budget(area, options.half_band_voxels, options.memory_budget_bytes) << "mm fits";
     throw Error(FABVDB_ERR_OUT_OF_BUDGET, message.str());
-}
-
-// The unsigned distance within half_band voxels of the mesh and, into
-// `closest_triangle` when given, the index of the triangle nearest to each voxel.
-openvdb::FloatGrid::Ptr unsigned_band(const Mesh& mesh, const openvdb::math::Transform& transform, float half_band,
-                                      Progress& progress, openvdb::Int32Grid* closest_triangle) {
-    std::vector<openvdb::Vec3s> points(mesh.vertices.size());
-    for (size_t i = 0; i < points.size(); ++i)
-        points[i] = openvdb::Vec3s(
-            transform.worldToIndex(openvdb::Vec3d(mesh.vertices[i][0], mesh.vertices[i][1], mesh.vertices[i][2])));
-    std::vector<openvdb::Vec3I> triangles(mesh.triangles.size());
-    for (size_t i = 0; i < triangles.size(); ++i)
-        triangles[i] = openvdb::Vec3I(mesh.triangles[i][0], mesh.triangles[i][1], mesh.triangles[i][2]);
-    openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
-    ProgressInterrupter interrupter(progress);
-    openvdb::FloatGrid::Ptr grid = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
-        interrupter, adapter, transform, half_band, half_band, openvdb::tools::UNSIGNED_DISTANCE_FIELD,
-        closest_triangle);
-    progress.check();
-    return grid;
 }
 
 // Runs `body(leaf_index)` over [0, count) in parallel, in slices so that
