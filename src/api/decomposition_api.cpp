@@ -12,6 +12,7 @@
 #include "api/guard.h"
 #include "api/options.h"
 #include "core/atomic_output.h"
+#include "core/stage_clock.h"
 #include "surface/decomposition_io.h"
 #include "surface/decomposition_session.h"
 #include "surface/draft_map.h"
@@ -56,10 +57,6 @@ void fill_if(bool& done, const std::function<void()>& fill) {
     if (done) return;
     fill();
     done = true;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void require_size(size_t struct_size, size_t needed, const char* name) {
@@ -144,7 +141,7 @@ fabvdb_status fabvdb_decomposition_new(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
         handle->session.emplace(mesh->mesh, settings, progress);
         handle->made_with = options;
         handle->made_with.shell_thickness = handle->session->shell().thickness;
-        handle->last_seconds = seconds_since(start);
+        handle->last_seconds = fabvdb::seconds_since(start);
         *out = handle.release();
     });
 }
@@ -177,7 +174,7 @@ fabvdb_status fabvdb_decomposition_read(fabvdb_ctx* ctx, const fabvdb_mesh* mesh
         handle->made_with.w_overlap = s.options().weights.overlap;
         handle->made_with.w_coarse_overlap = s.options().overlap_weight;
         handle->made_with.low_res_triangles = int(s.shell().triangle_count());
-        handle->last_seconds = seconds_since(start);
+        handle->last_seconds = fabvdb::seconds_since(start);
         *out = handle.release();
     });
 }
@@ -205,7 +202,7 @@ fabvdb_status fabvdb_decomposition_apply(fabvdb_ctx* ctx, fabvdb_decomposition* 
         fabvdb::Progress progress = ctx->make_progress();
         const auto start = std::chrono::steady_clock::now();
         session->session->apply(e, progress);
-        session->last_seconds = seconds_since(start);
+        session->last_seconds = fabvdb::seconds_since(start);
         session->changed(e.type == Edit::smooth);
     });
 }
@@ -225,7 +222,7 @@ fabvdb_status fabvdb_decomposition_apply_json(fabvdb_ctx* ctx, fabvdb_decomposit
         fabvdb::Progress progress = ctx->make_progress();
         const auto start = std::chrono::steady_clock::now();
         session->session->apply(e, progress);
-        session->last_seconds = seconds_since(start);
+        session->last_seconds = fabvdb::seconds_since(start);
         session->changed(e.type == Edit::smooth);
     });
 }
@@ -252,7 +249,7 @@ fabvdb_status fabvdb_decomposition_rerun(fabvdb_ctx* ctx, fabvdb_decomposition* 
         fabvdb::Progress progress = ctx->make_progress();
         const auto start = std::chrono::steady_clock::now();
         session->session->rerun(settings.decomposition, settings.draft_radians, progress);
-        session->last_seconds = seconds_since(start);
+        session->last_seconds = fabvdb::seconds_since(start);
         session->changed(true);
     });
 }
@@ -285,7 +282,7 @@ static fabvdb_status step(fabvdb_ctx* ctx, fabvdb_decomposition* session, bool f
         const auto start = std::chrono::steady_clock::now();
         const bool done = forward ? session->session->redo() : session->session->undo();
         if (!done) throw Error(FABVDB_ERR_NOT_FOUND, forward ? "nothing to redo" : "nothing to undo");
-        session->last_seconds = seconds_since(start);
+        session->last_seconds = fabvdb::seconds_since(start);
         session->changed(true);
     });
 }

@@ -1,12 +1,12 @@
 //! C API: hollowing (fabvdb hollow) of meshes and level sets, and its report.
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <memory>
 
 #include "api/guard.h"
 #include "api/options.h"
 #include "api/volume_handle.h"
+#include "core/stage_clock.h"
 #include "volume/extract_mesh.h"
 #include "volume/hollow.h"
 
@@ -72,8 +72,7 @@ HollowResult run_hollow(const fabvdb::Mesh& mesh, const HollowOptions& options, 
     const auto start = std::chrono::steady_clock::now();
     HollowResult result = fabvdb::volume::hollow(mesh, options, progress);
     if (report)
-        *report = report_of(result, options,
-                            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        *report = report_of(result, options, fabvdb::seconds_since(start));
     return result;
 }
 

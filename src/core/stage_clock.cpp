@@ -3,6 +3,10 @@
 
 namespace fabvdb {
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 StageClock::StageClock(std::map<std::string, double>& seconds)
     : seconds_(seconds), start_(std::chrono::steady_clock::now()), since_(start_) {}
 
@@ -19,8 +23,6 @@ void StageClock::add_laps(const std::map<std::string, double>& stages) {
     since_ = std::chrono::steady_clock::now();
 }
 
-double StageClock::total() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-}
+double StageClock::total() const { return seconds_since(start_); }
 
 }  // namespace fabvdb

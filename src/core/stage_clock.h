@@ -4,7 +4,8 @@
 //! map it writes to, so a stage run several times adds up. total() is the time
 //! since the clock was made; add_laps takes the stages of a step timed by its
 //! own clock instead of a lap. Costs one steady_clock read per lap; not
-//! thread-safe (one clock per operation).
+//! thread-safe (one clock per operation). seconds_since times a single span
+//! that has no stages.
 #pragma once
 
 #include <chrono>
@@ -12,6 +13,9 @@
 #include <string>
 
 namespace fabvdb {
+
+//! Seconds from `start` to now on the steady clock.
+double seconds_since(std::chrono::steady_clock::time_point start);
 
 class StageClock {
 public:

@@ -3,10 +3,12 @@
 #include "surface/coarse_decomposition.h"
 
 #include <algorithm>
-#include <chrono>
+#include <map>
+#include <string>
 
 #include <tbb/parallel_for.h>
 
+#include "core/stage_clock.h"
 #include "surface/undercut_depth.h"
 
 namespace fabvdb::surface {
@@ -60,16 +62,17 @@ Decomposition coarse_decomposition(const Shell& shell, const MoldabilityTerms& t
     int last_count = last;
     for (int count = first; count <= last_count; ++count) {
         progress.stage("coarse decomposition");
-        const auto start = std::chrono::steady_clock::now();
+        std::map<std::string, double> seconds;
+        StageClock clock(seconds);
         std::vector<int> seeds, directions;
         random_seeds(shell, terms, elements, count, seeds, directions);
         const Regions regions = grow_regions(shell, terms, elements, seeds, directions, options.overlap_weight,
                                              options.max_iterations, progress);
-        const auto grown = std::chrono::steady_clock::now();
+        const double grow_seconds = clock.lap("grow");
         Decomposition attempt;
         attempt.part_of_triangle = regions.region_of_triangle;
         attempt.parts = parting_lines(shell, terms, attempt.part_of_triangle, regions.direction, options.weights);
-        const auto cut = std::chrono::steady_clock::now();
+        const double cut_seconds = clock.lap("parting_line");
         const double energy = attempt.total_energy();
         const double depth = deepest_undercut(shell, terms, attempt, undercut_reach(shell, options));
         log.push_back({{"parts", int(seeds.size())},
@@ -78,8 +81,7 @@ Decomposition coarse_decomposition(const Shell& shell, const MoldabilityTerms& t
                        {"region_cost_per_iteration", regions.cost_per_iteration},
                        {"moldability_energy", energy},
                        {"timings",
-                        {{"per_iteration", std::chrono::duration<double>(grown - start).count() / regions.iterations},
-                         {"parting_line", std::chrono::duration<double>(cut - grown).count()}}}});
+                        {{"per_iteration", grow_seconds / regions.iterations}, {"parting_line", cut_seconds}}}});
         const bool under = energy < options.gamma;
         if (under && best_under_depth == 1e300) last_count = std::min(last, count + options.depth_attempts);
         if (under && depth < best_under_depth) {

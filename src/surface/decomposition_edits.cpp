@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "core/stage_clock.h"
 #include "surface/boundary_smoothing.h"
 #include "core/vec3_ops.h"
 
@@ -413,7 +414,7 @@ nlohmann::json apply_edit(Shell& shell, MoldabilityTerms& terms, const Decomposi
             break;
     }
     drop_empty_parts(decomposition);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
     return {{"type", type},
             {"parts_touched", touched},
             {"parts_after", decomposition.parts.size()},

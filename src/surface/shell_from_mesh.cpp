@@ -2,8 +2,8 @@
 #include "surface/shell_from_mesh.h"
 
 #include <algorithm>
-#include <chrono>
 
+#include "core/stage_clock.h"
 #include "surface/thin_features.h"
 
 namespace fabvdb::surface {
@@ -11,13 +11,13 @@ namespace fabvdb::surface {
 Shell shell_from_mesh(const Mesh& input, const volume::LowResShellOptions& options, Progress& progress,
                       nlohmann::json* stats) {
     volume::LowResShell low = volume::low_res_shell(input, options, progress);
-    const auto start = std::chrono::steady_clock::now();
+    StageClock clock(low.seconds);
     const size_t triangle_count = low.outer.triangles.size();
     Shell shell = make_shell(std::move(low.outer), std::move(low.inner), std::vector<int>(triangle_count, -1),
                              low.thickness, options.input_name);
     shell.solid = options.solid;
     if (!options.solid) shell.thin_segment = thin_segments(shell.outer, shell.neighbor, low.depth, low.thickness);
-    low.seconds["thin_features"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    clock.lap("thin_features");
     if (stats) {
         int segments = 0;
         size_t thin_triangles = 0;

@@ -3,7 +3,6 @@
 #include "volume/hollow.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -15,6 +14,7 @@
 
 #include "core/centred_frame.h"
 #include "core/error.h"
+#include "core/stage_clock.h"
 #include "volume/cavity_regions.h"
 #include "volume/clean_solid.h"
 #include "volume/extract_mesh.h"
@@ -29,23 +29,6 @@
 namespace fabvdb::volume {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-//! Records the seconds from its creation to the next `lap` under a name.
-class StageClock {
-public:
-    explicit StageClock(std::map<std::string, double>& timings) : timings_(timings), start_(Clock::now()) {}
-    void lap(const std::string& name) {
-        const auto now = Clock::now();
-        timings_[name] += std::chrono::duration<double>(now - start_).count();
-        start_ = now;
-    }
-
-private:
-    std::map<std::string, double>& timings_;
-    Clock::time_point start_;
-};
 
 void require(bool ok, const std::string& message) {
     if (!ok) throw Error(FABVDB_ERR_INVALID_ARGUMENT, message);

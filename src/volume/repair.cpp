@@ -2,10 +2,10 @@
 #include "volume/repair.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/centred_frame.h"
 #include "core/error.h"
+#include "core/stage_clock.h"
 #include "volume/closed_manifold.h"
 #include "volume/crossing_pairs.h"
 #include "volume/drop_small_shells.h"
@@ -18,46 +18,37 @@ namespace fabvdb::volume {
 
 namespace {
 
-template <class Body>
-auto timed(std::map<std::string, double>& timings, const char* stage, const Body& body) {
-    const auto start = std::chrono::steady_clock::now();
-    auto result = body();
-    timings[stage] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
-}
-
 // Extracts the surface and snaps it onto the input where it is clean. Walls
 // thinner than a voxel extract as two sheets through the same cells, which
 // may touch: such a solid is grown by half a voxel (at most twice) until its
 // surface is a closed manifold without crossings. With snapping, the
 // crossing test of the snapped surface covers the extracted one as well.
-// Returns the shells the last extraction dropped as noise.
+// Its stages lap on `clock`. Returns the shells the last extraction dropped
+// as noise.
 uint64_t extract_clean_surface(const OrientedInput& input, const RepairOptions& options, RepairResult& result,
-                               Progress& progress) {
+                               StageClock& clock, Progress& progress) {
     uint64_t specks = 0;
-    auto& timings = result.distance.timings;
     for (int attempt = 0;; ++attempt) {
         const bool last = attempt == 2;
-        const bool manifold = timed(timings, "extract surface", [&] {
-            if (attempt > 0) {
-                progress.stage("thicken thin walls");
-                result.grid = rebuild_band(*result.grid, 0.5 * result.grid->voxelSize()[0],
-                                           options.distance.half_band_voxels, progress);
-            }
-            result.mesh = extract_mesh(*result.grid, options.adaptivity, progress, &specks);
-            return is_closed_manifold(result.mesh);
-        });
+        if (attempt > 0) {
+            progress.stage("thicken thin walls");
+            result.grid = rebuild_band(*result.grid, 0.5 * result.grid->voxelSize()[0],
+                                       options.distance.half_band_voxels, progress);
+        }
+        result.mesh = extract_mesh(*result.grid, options.adaptivity, progress, &specks);
+        const bool manifold = is_closed_manifold(result.mesh);
+        clock.lap("extract surface");
         if (!manifold && !last) continue;
         bool crossing = false;
         if (options.snap) {
-            const SnapResult snap = timed(timings, "snap", [&] {
-                return snap_to_mesh(result.mesh, input.mesh, *input.closest_triangle, result.grid->voxelSize()[0],
-                                    progress);
-            });
+            const SnapResult snap =
+                snap_to_mesh(result.mesh, input.mesh, *input.closest_triangle, result.grid->voxelSize()[0], progress);
+            clock.lap("snap");
             result.snapped_vertices = snap.moved_vertices;
             crossing = snap.self_intersecting;
         } else {
-            crossing = timed(timings, "extract surface", [&] { return !crossing_pairs(result.mesh).empty(); });
+            crossing = !crossing_pairs(result.mesh).empty();
+            clock.lap("extract surface");
         }
         if (!crossing || last) return specks;
     }
@@ -85,15 +76,14 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     OrientedInput input;
     result.grid = signed_distance_from_mesh(mesh, options.distance, progress, &result.distance,
                                             options.extract && options.snap ? &input : nullptr);
-    auto& timings = result.distance.timings;
+    StageClock clock(result.distance.timings);
     // Without a minimum volume no solid shell is dropped from the grid, and
     // the shells are counted as the connected pieces of the extracted
     // surface: cheaper than segmenting the grid, and what the output holds.
     const bool count_on_surface = options.extract && options.min_shell_volume == 0.0;
     if (!count_on_surface) {
-        const ShellCounts shells = timed(timings, "shells", [&] {
-            return drop_small_shells(result.grid, options.min_shell_volume, progress);
-        });
+        const ShellCounts shells = drop_small_shells(result.grid, options.min_shell_volume, progress);
+        clock.lap("shells");
         result.shells_kept = shells.kept;
         result.shells_dropped = shells.dropped;
         if (shells.kept == 0)
@@ -101,13 +91,12 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     }
     result.distance.active_voxels = result.grid->activeVoxelCount();
     if (!options.extract) return result;
-    const uint64_t specks = extract_clean_surface(input, options, result, progress);
+    const uint64_t specks = extract_clean_surface(input, options, result, clock, progress);
     // Surface shells under a voxel's volume are specks of the extraction
     // (a voxel barely below zero), not pieces of the solid: always dropped.
     const double voxel = result.grid->voxelSize()[0];
-    const MeshShellCounts surface_shells = timed(timings, "shells", [&] {
-        return drop_small_mesh_shells(result.mesh, voxel * voxel * voxel);
-    });
+    const MeshShellCounts surface_shells = drop_small_mesh_shells(result.mesh, voxel * voxel * voxel);
+    clock.lap("shells");
     result.shells_dropped += specks + surface_shells.dropped;
     if (count_on_surface) result.shells_kept = surface_shells.kept;
     return result;

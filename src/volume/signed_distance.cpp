@@ -18,7 +18,6 @@
 #include "volume/signed_distance.h"
 
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -31,6 +30,7 @@
 #include <openvdb/tree/LeafManager.h>
 
 #include "core/error.h"
+#include "core/stage_clock.h"
 #include "volume/closed_cycle.h"
 #include "volume/enclosed_share.h"
 #include "volume/memory_estimate.h"
@@ -55,22 +55,6 @@ constexpr double clearly_inside = 0.6;
 // encloses nothing: soups, sheets and bowls measure under 0.05, scans with
 // holes over 0.5 (tests/volume/enclosed_share_test.cpp).
 constexpr double min_enclosed_share = 0.1;
-
-class StageClock {
-public:
-    StageClock(SignedDistanceStats& stats, Progress& progress, const char* name)
-        : stats_(stats), name_(name), start_(std::chrono::steady_clock::now()) {
-        progress.stage(name);
-    }
-    ~StageClock() {
-        stats_.timings[name_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-
-private:
-    SignedDistanceStats& stats_;
-    const char* name_;
-    std::chrono::steady_clock::time_point start_;
-};
 
 void check_budget(double area, const SignedDistanceOptions& options, SignedDistanceStats& stats) {
     stats.estimated_bytes = estimate_level_set_bytes(area, options.voxel_size, options.half_band_voxels);
@@ -350,25 +334,20 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
     const float half_band = float(options.half_band_voxels);
     const auto transform = openvdb::math::Transform::createLinearTransform(voxel);
 
-    Mesh mesh;
-    {
-        StageClock clock(stats, progress, "orient");
-        mesh = orient_soup(input, progress);
-    }
+    StageClock clock(stats.timings);
+    progress.stage("orient");
+    Mesh mesh = orient_soup(input, progress);
+    clock.lap("orient");
     if (mesh.triangles.empty())
         throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangle with a non-zero area");
 
-    std::unique_ptr<WindingNumber> winding;
-    {
-        StageClock clock(stats, progress, "winding number tree");
-        winding = std::make_unique<WindingNumber>(mesh);
-    }
+    progress.stage("winding number tree");
+    const auto winding = std::make_unique<WindingNumber>(mesh);
+    clock.lap("winding number tree");
     // What encloses nothing is told apart before any voxel is built.
-    double share = 0.0;
-    {
-        StageClock clock(stats, progress, "enclosed share");
-        share = enclosed_share(mesh, *winding);
-    }
+    progress.stage("enclosed share");
+    const double share = enclosed_share(mesh, *winding);
+    clock.lap("enclosed share");
     stats.enclosed_share = share;
     const bool encloses = share >= min_enclosed_share;
     if (!encloses && options.thicken <= 0.0) {
@@ -383,15 +362,16 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
     const openvdb::Int32Grid::Ptr closest_triangle = oriented ? openvdb::Int32Grid::create(-1) : nullptr;
     openvdb::FloatGrid::Ptr grid;
     if (encloses) {
-        StageClock clock(stats, progress, "distance");
+        progress.stage("distance");
         grid = unsigned_band(mesh, *transform, half_band, progress, closest_triangle.get());
+        clock.lap("distance");
     }
 
     std::vector<float> band_winding;
     std::atomic<uint64_t> clearly_inside_voxels{0};
     const bool closed = is_closed_cycle(mesh);
     if (encloses) {
-        StageClock clock(stats, progress, "winding number");
+        progress.stage("winding number");
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
         band_winding.assign(leaves.leafCount() * size_t(leaf_size), 0.0f);
         const float smallest_distance = float(1e-6 * voxel);
@@ -410,6 +390,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
             }
             clearly_inside_voxels += inside;
         });
+        clock.lap("winding number");
     }
 
     if (clearly_inside_voxels == 0) {
@@ -419,17 +400,19 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
                                                   " mm: no voxel lies inside it (walls thinner than a voxel); "
                                                   "give a smaller voxel size, or a thickness (--thicken) to make "
                                                   "it a solid sheet");
-        StageClock clock(stats, progress, "thicken");
+        progress.stage("thicken");
         const double half_thickness = 0.5 * options.thicken;
         grid = unsigned_band(mesh, *transform, float(std::ceil(half_thickness / voxel)) + half_band, progress,
                              closest_triangle.get());
         grid = rebuild_band(*grid, half_thickness, options.half_band_voxels, progress);
         stats.thickened = stats.rebuilt = true;
+        clock.lap("thicken");
     } else if (band_is_consistent(*grid, voxel, closed)) {
-        StageClock clock(stats, progress, "flood fill");
+        progress.stage("flood fill");
         openvdb::tools::signedFloodFill(grid->tree());
+        clock.lap("flood fill");
     } else {
-        StageClock clock(stats, progress, "rebuild");
+        progress.stage("rebuild");
         // A closed-cycle input has no hole for the winding number to close
         // off the band: every region off it borders band voxels of its own
         // side, so a flood fill signs it.
@@ -441,6 +424,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         progress.stage("rebuild");
         grid = rebuild_band(*grid, 0.0, options.half_band_voxels, progress);
         stats.rebuilt = true;
+        clock.lap("rebuild");
     }
     grid->setTransform(transform);
     grid->setGridClass(openvdb::GRID_LEVEL_SET);

@@ -1,7 +1,8 @@
 // StageClock: each lap adds the time since the previous lap (or since the
 // clock was made) to its stage, repeated stages add up, laps sum to at most the
-// total, the map passed in is the one written, and stages added from another
-// clock stand in for the time since the previous lap.
+// total, the map passed in is the one written, stages added from another clock
+// stand in for the time since the previous lap, and seconds_since measures a
+// single span.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -98,6 +99,15 @@ TEST(StageClock, AnImmediateLapIsTinyButNotNegative) {
     EXPECT_GE(lap, 0.0);
     EXPECT_LT(lap, 0.5);
     EXPECT_EQ(seconds.at("nothing"), lap);
+}
+
+TEST(StageClock, SecondsSinceSpansFromTheGivenTimeToNow) {
+    const auto before = std::chrono::steady_clock::now();
+    std::this_thread::sleep_for(20ms);
+    const double span = fabvdb::seconds_since(before);
+    const double outer = std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
+    EXPECT_GE(span, 0.020);
+    EXPECT_LE(span, outer);
 }
 
 }  // namespace
