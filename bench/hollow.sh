@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # bench/hollow.sh BUILD_DIR [MODEL...] — fabvdb hollow against PrusaSlicer's
-# SLA hollowing, in the same run, on the shared models scaled to 60 and
-# 100 mm, wall 3 mm, closing 2 mm. PrusaSlicer's hollowing time is the span
+# SLA hollowing, in the same run, on the shared models (a MODEL is a file of
+# the shared meshes folder, or a path, e.g. a corpus mesh) scaled to 60 and
+# 100 mm, wall 3 mm, closing 2 mm. SUBDIVIDE=N splits each model's triangles
+# in four N times first (the surface does not move: large scans from small
+# ones, e.g. a 100k-triangle model at N=2 has 1.6M). PrusaSlicer's hollowing time is the span
 # between its "Hollowing model" and "Drilling holes" log lines, its memory the
 # peak it logs at "Drilling holes"; fabvdb's time is the hollowing operation
 # (report timings.total) and its memory the peak RSS of the whole command.
@@ -39,13 +42,14 @@ json_number() {  # json_number FILE KEY: the first number after "KEY":
   sed -n "s/.*\"$2\": *\(-\{0,1\}[0-9.eE+-]*\).*/\1/p" "$1" | head -n 1
 }
 
-printf '%-26s %4s | %8s %8s %6s | %7s %7s %5s | %8s %8s %8s %9s\n' model mm ps_s fab_s ratio ps_MB fab_MB mem \
+printf '%-26s %8s %4s | %8s %8s %6s | %7s %7s %5s | %8s %8s %8s %9s\n' model tris mm ps_s fab_s ratio ps_MB fab_MB mem \
   wmin_c2 wmin_c0 wmed_c0 outer_dev
 for model in "${MODELS[@]}"; do
   for size in 60 100; do
     log="$WORK/prusa.log"
     part="$WORK/part.stl"
-    "$QUALITY" --scaled "$MESHES/$model" "$size" "$part"
+    case "$model" in */*) path="$model" ;; *) path="$MESHES/$model" ;; esac
+    "$QUALITY" --scaled "$path" "$size" "$part" "${SUBDIVIDE:-0}"
     prusa_seconds=""
     fab_seconds=""
     for _ in $(seq "$RUNS"); do
@@ -76,7 +80,9 @@ for model in "${MODELS[@]}"; do
     "$FABVDB" hollow "$part" -o "$WORK/c0.stl" --wall 3mm --closing 0mm -q
     read -r wmin2 _ _ _ < <("$QUALITY" "$part" "$size" "$WORK/c2.stl")
     read -r wmin0 wmed0 dev _ < <("$QUALITY" "$part" "$size" "$WORK/c0.stl")
-    printf '%-26s %4s | %8s %8.3f %6.1f | %7s %7s %5.2f | %8s %8s %8s %9s\n' "$model" "$size" "$prusa_seconds" \
+    triangles=$(( ($(stat -c %s "$part") - 84) / 50 ))  # the scaled copy is a binary STL
+    printf '%-26s %8s %4s | %8s %8.3f %6.1f | %7s %7s %5.2f | %8s %8s %8s %9s\n' "$(basename "$model")" "$triangles" \
+      "$size" "$prusa_seconds" \
       "$fab_seconds" "$(awk -v a="$prusa_seconds" -v b="$fab_seconds" 'BEGIN { print a / b }')" "$prusa_mb" "$fab_mb" \
       "$(awk -v a="$fab_mb" -v b="$prusa_mb" 'BEGIN { print a / b }')" "$wmin2" "$wmin0" "$wmed0" "$dev"
   done

@@ -6,8 +6,9 @@
 // triangles; the outer deviation is the distance from the output's outer
 // vertices to the input scaled like `fabvdb --fit FIT_MM`. Prints one line:
 // wall_min wall_median outer_deviation_max outer_deviation_mean (mm).
-// bench_hollow_quality --scaled INPUT FIT_MM OUT writes the input scaled that
-// way instead (one file both slicers read).
+// bench_hollow_quality --scaled INPUT FIT_MM OUT [SUBDIVISIONS] writes the
+// input scaled that way instead (one file both slicers read), its triangles
+// split in four SUBDIVISIONS times (default 0; the surface does not move).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 
 #include "core/error.h"
 #include "io/mesh_io.h"
+#include "subdivided.h"
 #include "support/cgal_mesh.h"
 
 namespace {
@@ -40,9 +42,10 @@ void fit(fabvdb::Mesh& mesh, double fit_mm) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool scaled_copy = argc == 5 && std::string(argv[1]) == "--scaled";
+    const bool scaled_copy = (argc == 5 || argc == 6) && std::string(argv[1]) == "--scaled";
     if (argc != 4 && !scaled_copy) {
-        std::fprintf(stderr, "usage: bench_hollow_quality INPUT FIT_MM HOLLOWED | --scaled INPUT FIT_MM OUT\n");
+        std::fprintf(stderr,
+                     "usage: bench_hollow_quality INPUT FIT_MM HOLLOWED | --scaled INPUT FIT_MM OUT [SUBDIVISIONS]\n");
         return 1;
     }
     try {
@@ -50,6 +53,7 @@ int main(int argc, char** argv) {
         if (scaled_copy) {
             fabvdb::Mesh input = fabvdb::io::read_mesh(argv[2], progress);
             fit(input, std::atof(argv[3]));
+            for (int k = argc == 6 ? std::atoi(argv[5]) : 0; k > 0; --k) input = fabvdb::bench::subdivided(input);
             fabvdb::io::write_mesh(input, argv[4]);
             return 0;
         }

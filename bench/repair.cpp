@@ -11,7 +11,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -19,6 +18,7 @@
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include "io/mesh_io.h"
+#include "subdivided.h"
 #include "volume/repair.h"
 
 namespace {
@@ -64,30 +64,6 @@ fabvdb::Mesh scaled_to(fabvdb::Mesh mesh, double longest_side) {
     for (auto& v : mesh.vertices)
         for (int k = 0; k < 3; ++k) v[k] = (v[k] - box.min[k]) * longest_side / longest;
     return mesh;
-}
-
-// Splits every triangle into four at its edge midpoints (shared midpoints).
-fabvdb::Mesh subdivided(const fabvdb::Mesh& mesh) {
-    fabvdb::Mesh out;
-    out.vertices = mesh.vertices;
-    std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoint;
-    const auto middle = [&](uint32_t a, uint32_t b) {
-        const auto key = std::minmax(a, b);
-        auto [it, inserted] = midpoint.try_emplace({key.first, key.second}, uint32_t(out.vertices.size()));
-        if (inserted) {
-            const auto &p = mesh.vertices[a], &q = mesh.vertices[b];
-            out.vertices.push_back({0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2])});
-        }
-        return it->second;
-    };
-    for (const auto& t : mesh.triangles) {
-        const uint32_t ab = middle(t[0], t[1]), bc = middle(t[1], t[2]), ca = middle(t[2], t[0]);
-        out.triangles.push_back({t[0], ab, ca});
-        out.triangles.push_back({ab, t[1], bc});
-        out.triangles.push_back({ca, bc, t[2]});
-        out.triangles.push_back({ab, bc, ca});
-    }
-    return out;
 }
 
 void repair_once(const fabvdb::Mesh& mesh, double voxel) {
@@ -143,7 +119,7 @@ int main(int argc, char** argv) {
     if (count) std::printf("mean ratio %.2f\n", ratio_sum / count);
 
     fabvdb::Progress progress;
-    const fabvdb::Mesh scan = subdivided(subdivided(
+    const fabvdb::Mesh scan = fabvdb::bench::subdivided(fabvdb::bench::subdivided(
         scaled_to(fabvdb::io::read_mesh(FABVDB_SHARED_DATA "/meshes/armadillo_86k.obj", progress), 100.0)));
     const double default_voxel = fabvdb::volume::voxel_size_for_resolution(scan, 400, "scan");
     for (double v : {default_voxel, voxel}) {

@@ -2,8 +2,10 @@
 #include "volume/orient_soup.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
-#include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -23,18 +25,20 @@ uint32_t find_root(std::vector<uint32_t>& parent, uint32_t i) {
     return i;
 }
 
-// A triangle's (merged) point indices in increasing order, and their hash.
+// Point indices in increasing order of position (lexicographic).
+std::vector<uint32_t> sorted_by_position(const std::vector<Vec3>& points) {
+    std::vector<uint32_t> order(points.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return points[a] < points[b]; });
+    return order;
+}
+
+// A triangle's (merged) point indices in increasing order.
 Triangle sorted_corners(const Triangle& t) {
     Triangle sorted = t;
     std::sort(sorted.begin(), sorted.end());
     return sorted;
 }
-
-struct CornersHash {
-    size_t operator()(const Triangle& t) const {
-        return (size_t(t[0]) * 0x9E3779B97F4A7C15ull) ^ (size_t(t[1]) * 0xC2B2AE3D27D4EB4Full) ^ size_t(t[2]);
-    }
-};
 
 // Whether t and u list the same corners in the same cyclic order.
 bool same_cycle(const Triangle& t, const Triangle& u) {
@@ -48,19 +52,17 @@ bool same_cycle(const Triangle& t, const Triangle& u) {
 // solid of the outward pieces (their winding number at each of its points) is
 // the wall of a cavity: it is turned back inward. Other pieces stay outward.
 void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_t>& parent) {
-    const auto position_key = [](const Vec3& p) {
-        return std::hash<double>()(p[0]) * 0x9E3779B97F4A7C15ull ^ std::hash<double>()(p[1]) * 0xC2B2AE3D27D4EB4Full ^
-               std::hash<double>()(p[2]);
-    };
-    std::unordered_multimap<uint64_t, uint32_t> by_position;
-    for (uint32_t i = 0; i < oriented.vertices.size(); ++i) by_position.emplace(position_key(oriented.vertices[i]), i);
+    // Each input triangle in the merged points' indices, by sorted corners
+    // (sorted arrays and binary search: a million-triangle scan's hash
+    // tables cost more than the orientation itself).
+    const std::vector<uint32_t> by_position = sorted_by_position(oriented.vertices);
     const auto merged = [&](const Vec3& p) -> int64_t {
-        auto [first, last] = by_position.equal_range(position_key(p));
-        for (auto it = first; it != last; ++it)
-            if (oriented.vertices[it->second] == p) return it->second;
-        return -1;
+        const auto it = std::lower_bound(by_position.begin(), by_position.end(), p,
+                                         [&](uint32_t v, const Vec3& q) { return oriented.vertices[v] < q; });
+        return it != by_position.end() && oriented.vertices[*it] == p ? int64_t(*it) : -1;
     };
-    std::unordered_map<Triangle, Triangle, CornersHash> input_order;
+    std::vector<std::pair<Triangle, Triangle>> input_order;  // (sorted corners, input order)
+    input_order.reserve(input.triangles.size());
     for (const Triangle& t : input.triangles) {
         Triangle u;
         bool found = true;
@@ -69,8 +71,16 @@ void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_
             found = m >= 0;
             u[k] = uint32_t(std::max<int64_t>(m, 0));
         }
-        if (found) input_order.emplace(sorted_corners(u), u);
+        if (found) input_order.emplace_back(sorted_corners(u), u);
     }
+    std::sort(input_order.begin(), input_order.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    const auto input_cycle = [&](const Triangle& t) -> const Triangle* {
+        const Triangle key = sorted_corners(t);
+        const auto it = std::lower_bound(input_order.begin(), input_order.end(), key,
+                                         [](const auto& entry, const Triangle& k) { return entry.first < k; });
+        return it != input_order.end() && it->first == key ? &it->second : nullptr;
+    };
 
     // Per piece (indexed by its root vertex): area whose input order agrees
     // with the outward one, and total area.
@@ -79,8 +89,8 @@ void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_
         const uint32_t root = find_root(parent, t[0]);
         const double area = triangle_area(oriented, t);
         total[root] += area;
-        const auto it = input_order.find(sorted_corners(t));
-        if (it != input_order.end() && same_cycle(t, it->second)) agreeing[root] += area;
+        const Triangle* given = input_cycle(t);
+        if (given && same_cycle(t, *given)) agreeing[root] += area;
     }
     std::vector<char> cavity(oriented.vertices.size(), 0);
     bool any_inward = false;
@@ -111,11 +121,28 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
     std::vector<Point> points;
     points.reserve(mesh.vertices.size());
     for (const Vec3& v : mesh.vertices) points.emplace_back(v[0], v[1], v[2]);
-    std::vector<std::vector<std::size_t>> soup;
+    // CGAL's repair_polygon_soup for triangles, on fixed-size polygons (a
+    // vector per triangle costs a million allocations on a large scan), with
+    // coincident points merged by sorting (its std::map took half of this
+    // step's time on a 1.8M-triangle scan): its simplification and pinch
+    // splitting both come down to dropping a triangle with a repeated corner
+    // once coincident points are merged.
+    std::vector<uint32_t> merged(mesh.vertices.size());
+    const std::vector<uint32_t> by_position = sorted_by_position(mesh.vertices);
+    for (size_t i = 0; i < by_position.size(); ++i) {
+        const uint32_t v = by_position[i];
+        const bool repeat = i > 0 && mesh.vertices[v] == mesh.vertices[by_position[i - 1]];
+        merged[v] = repeat ? merged[by_position[i - 1]] : v;
+    }
+    std::vector<std::array<std::size_t, 3>> soup;
     soup.reserve(mesh.triangles.size());
-    for (const Triangle& t : mesh.triangles) soup.push_back({t[0], t[1], t[2]});
+    for (const Triangle& t : mesh.triangles) soup.push_back({merged[t[0]], merged[t[1]], merged[t[2]]});
     namespace PMP = CGAL::Polygon_mesh_processing;
-    PMP::repair_polygon_soup(points, soup);
+    soup.erase(std::remove_if(soup.begin(), soup.end(),
+                              [](const auto& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }),
+               soup.end());
+    PMP::merge_duplicate_polygons_in_polygon_soup(points, soup);
+    PMP::remove_isolated_points_in_polygon_soup(points, soup);
     progress.update(0.4);
     PMP::orient_polygon_soup(points, soup);
     progress.update(0.8);
@@ -125,8 +152,7 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
     for (const Point& p : points) oriented.vertices.push_back({p.x(), p.y(), p.z()});
     oriented.triangles.reserve(soup.size());
     for (const auto& polygon : soup)
-        if (polygon.size() == 3)
-            oriented.triangles.push_back({uint32_t(polygon[0]), uint32_t(polygon[1]), uint32_t(polygon[2])});
+        oriented.triangles.push_back({uint32_t(polygon[0]), uint32_t(polygon[1]), uint32_t(polygon[2])});
 
     // Connected pieces by shared vertices, then each piece's signed volume
     // about its own centroid (translation-invariant for open pieces too).
