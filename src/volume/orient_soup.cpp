@@ -25,72 +25,71 @@ uint32_t find_root(std::vector<uint32_t>& parent, uint32_t i) {
     return i;
 }
 
-// Point indices in increasing order of position (lexicographic).
-std::vector<uint32_t> sorted_by_position(const std::vector<Vec3>& points) {
-    std::vector<uint32_t> order(points.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return points[a] < points[b]; });
-    return order;
-}
-
-// A triangle's (merged) point indices in increasing order.
+// A triangle's point indices in increasing order.
 Triangle sorted_corners(const Triangle& t) {
     Triangle sorted = t;
     std::sort(sorted.begin(), sorted.end());
     return sorted;
 }
 
-// Whether t and u list the same corners in the same cyclic order.
-bool same_cycle(const Triangle& t, const Triangle& u) {
-    for (int r = 0; r < 3; ++r)
-        if (t[0] == u[r] && t[1] == u[(r + 1) % 3] && t[2] == u[(r + 2) % 3]) return true;
-    return false;
+// The triangles CGAL's repair_polygon_soup would keep, as fixed-size
+// polygons, with coincident points merged: each triangle's corners are
+// distinct and no two triangles have the same corners (of duplicates the
+// first is kept). Done by sorting, which on a 1.8M-triangle scan is several
+// times faster than CGAL's std::map of points and its vector per polygon.
+// Polygons stay in input order.
+std::vector<std::array<std::size_t, 3>> merged_soup(const Mesh& mesh) {
+    std::vector<uint32_t> order(mesh.vertices.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t a, uint32_t b) { return mesh.vertices[a] < mesh.vertices[b]; });
+    std::vector<uint32_t> merged(mesh.vertices.size());
+    for (size_t i = 0; i < order.size(); ++i) {
+        const bool repeat = i > 0 && mesh.vertices[order[i]] == mesh.vertices[order[i - 1]];
+        merged[order[i]] = repeat ? merged[order[i - 1]] : order[i];
+    }
+    std::vector<std::pair<Triangle, uint32_t>> keyed;  // (sorted corners, input triangle)
+    keyed.reserve(mesh.triangles.size());
+    for (uint32_t i = 0; i < mesh.triangles.size(); ++i) {
+        const Triangle& t = mesh.triangles[i];
+        const Triangle corners = sorted_corners({merged[t[0]], merged[t[1]], merged[t[2]]});
+        if (corners[0] != corners[1] && corners[1] != corners[2]) keyed.emplace_back(corners, i);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<uint32_t> source;
+    for (size_t i = 0; i < keyed.size(); ++i)
+        if (i == 0 || keyed[i].first != keyed[i - 1].first) source.push_back(keyed[i].second);
+    std::sort(source.begin(), source.end());
+    std::vector<std::array<std::size_t, 3>> soup;
+    soup.reserve(source.size());
+    for (uint32_t i : source) {
+        const Triangle& t = mesh.triangles[i];
+        soup.push_back({merged[t[0]], merged[t[1]], merged[t[2]]});
+    }
+    return soup;
 }
 
-// A piece that the input oriented inward (by the area of its triangles whose
-// input order disagrees with the outward one) and that lies wholly inside the
-// solid of the outward pieces (their winding number at each of its points) is
-// the wall of a cavity: it is turned back inward. Other pieces stay outward.
-void keep_cavities_inward(const Mesh& input, Mesh& oriented, std::vector<uint32_t>& parent) {
-    // Each input triangle in the merged points' indices, by sorted corners
-    // (sorted arrays and binary search: a million-triangle scan's hash
-    // tables cost more than the orientation itself).
-    const std::vector<uint32_t> by_position = sorted_by_position(oriented.vertices);
-    const auto merged = [&](const Vec3& p) -> int64_t {
-        const auto it = std::lower_bound(by_position.begin(), by_position.end(), p,
-                                         [&](uint32_t v, const Vec3& q) { return oriented.vertices[v] < q; });
-        return it != by_position.end() && oriented.vertices[*it] == p ? int64_t(*it) : -1;
-    };
-    std::vector<std::pair<Triangle, Triangle>> input_order;  // (sorted corners, input order)
-    input_order.reserve(input.triangles.size());
-    for (const Triangle& t : input.triangles) {
-        Triangle u;
-        bool found = true;
-        for (int k = 0; k < 3 && found; ++k) {
-            const int64_t m = merged(input.vertices[t[k]]);
-            found = m >= 0;
-            u[k] = uint32_t(std::max<int64_t>(m, 0));
-        }
-        if (found) input_order.emplace_back(sorted_corners(u), u);
-    }
-    std::sort(input_order.begin(), input_order.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    const auto input_cycle = [&](const Triangle& t) -> const Triangle* {
-        const Triangle key = sorted_corners(t);
-        const auto it = std::lower_bound(input_order.begin(), input_order.end(), key,
-                                         [](const auto& entry, const Triangle& k) { return entry.first < k; });
-        return it != input_order.end() && it->first == key ? &it->second : nullptr;
-    };
+// Records which polygons CGAL's orientation reversed.
+struct ReversalVisitor : CGAL::Polygon_mesh_processing::Default_orientation_visitor {
+    std::vector<char>* reversed;
+    void polygon_orientation_reversed(std::size_t polygon) { (*reversed)[polygon] ^= 1; }
+};
 
+// A piece that the input oriented inward (by the area of its triangles whose
+// input order disagrees with the outward one: `as_given`) and that lies
+// wholly inside the solid of the outward pieces (their winding number at
+// each of its points) is the wall of a cavity: it is turned back inward.
+// Other pieces stay outward.
+void keep_cavities_inward(Mesh& oriented, const std::vector<char>& as_given, std::vector<uint32_t>& parent) {
     // Per piece (indexed by its root vertex): area whose input order agrees
     // with the outward one, and total area.
     std::vector<double> agreeing(oriented.vertices.size(), 0.0), total(oriented.vertices.size(), 0.0);
-    for (const Triangle& t : oriented.triangles) {
+    for (size_t i = 0; i < oriented.triangles.size(); ++i) {
+        const Triangle& t = oriented.triangles[i];
         const uint32_t root = find_root(parent, t[0]);
         const double area = triangle_area(oriented, t);
         total[root] += area;
-        const Triangle* given = input_cycle(t);
-        if (given && same_cycle(t, *given)) agreeing[root] += area;
+        if (as_given[i]) agreeing[root] += area;
     }
     std::vector<char> cavity(oriented.vertices.size(), 0);
     bool any_inward = false;
@@ -121,30 +120,14 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
     std::vector<Point> points;
     points.reserve(mesh.vertices.size());
     for (const Vec3& v : mesh.vertices) points.emplace_back(v[0], v[1], v[2]);
-    // CGAL's repair_polygon_soup for triangles, on fixed-size polygons (a
-    // vector per triangle costs a million allocations on a large scan), with
-    // coincident points merged by sorting (its std::map took half of this
-    // step's time on a 1.8M-triangle scan): its simplification and pinch
-    // splitting both come down to dropping a triangle with a repeated corner
-    // once coincident points are merged.
-    std::vector<uint32_t> merged(mesh.vertices.size());
-    const std::vector<uint32_t> by_position = sorted_by_position(mesh.vertices);
-    for (size_t i = 0; i < by_position.size(); ++i) {
-        const uint32_t v = by_position[i];
-        const bool repeat = i > 0 && mesh.vertices[v] == mesh.vertices[by_position[i - 1]];
-        merged[v] = repeat ? merged[by_position[i - 1]] : v;
-    }
-    std::vector<std::array<std::size_t, 3>> soup;
-    soup.reserve(mesh.triangles.size());
-    for (const Triangle& t : mesh.triangles) soup.push_back({merged[t[0]], merged[t[1]], merged[t[2]]});
+    std::vector<std::array<std::size_t, 3>> soup = merged_soup(mesh);
     namespace PMP = CGAL::Polygon_mesh_processing;
-    soup.erase(std::remove_if(soup.begin(), soup.end(),
-                              [](const auto& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }),
-               soup.end());
-    PMP::merge_duplicate_polygons_in_polygon_soup(points, soup);
     PMP::remove_isolated_points_in_polygon_soup(points, soup);
     progress.update(0.4);
-    PMP::orient_polygon_soup(points, soup);
+    std::vector<char> reversed(soup.size(), 0);
+    ReversalVisitor visitor;
+    visitor.reversed = &reversed;
+    PMP::orient_polygon_soup(points, soup, CGAL::parameters::visitor(visitor));
     progress.update(0.8);
 
     Mesh oriented;
@@ -179,10 +162,16 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
             for (int k = 0; k < 3; ++k) p[i][k] = oriented.vertices[t[i]][k] - c[k] / c[3];
         volume[root] += six_signed_tetrahedron_volume(p[0], p[1], p[2]);
     }
-    for (Triangle& t : oriented.triangles)
-        if (volume[find_root(parent, t[0])] < 0.0) std::swap(t[1], t[2]);
+    // Whether each triangle now lists its input corners in their input order.
+    std::vector<char> as_given(oriented.triangles.size());
+    for (size_t i = 0; i < oriented.triangles.size(); ++i) {
+        Triangle& t = oriented.triangles[i];
+        const bool flip = volume[find_root(parent, t[0])] < 0.0;
+        if (flip) std::swap(t[1], t[2]);
+        as_given[i] = !(reversed[i] ^ flip);
+    }
     progress.update(0.9);
-    keep_cavities_inward(mesh, oriented, parent);
+    keep_cavities_inward(oriented, as_given, parent);
     progress.update(1.0);
     return oriented;
 }
