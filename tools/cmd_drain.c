@@ -2,6 +2,7 @@
  * part (or takes a hollow shell as is), finds where trapped powder can escape
  * and drills the best drain holes, with a report of the holes and the powder
  * predicted to stay, against holes at the lowest points. */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,11 +53,13 @@ static void print_routine(cli_run* run, const fabvdb_report* report) {
     fabvdb_report_number(run->ctx, report, "/random_routines/std_fraction", &spread);
     printf("cleaning routine (predicted powder left: %.2f%%; random turns instead: %.2f%% +- %.2f%%):\n",
            100.0 * routine, 100.0 * mean, 100.0 * spread);
-    for (int step = 0;; ++step) {
+    size_t steps = 0;
+    fabvdb_report_count(run->ctx, report, "/routine", &steps);
+    for (int step = 0; step < (int)steps; ++step) {
         char pointer[64];
-        double tilt, down, lowest, axis[3];
+        double tilt = 0.0, down, lowest, axis[3];
         snprintf(pointer, sizeof pointer, "/routine/%d/tilt_degrees", step);
-        if (fabvdb_report_number(run->ctx, report, pointer, &tilt) != FABVDB_OK) break;
+        fabvdb_report_number(run->ctx, report, pointer, &tilt);
         for (int k = 0; k < 3; ++k) {
             snprintf(pointer, sizeof pointer, "/routine/%d/tilt_axis/%d", step, k);
             fabvdb_report_number(run->ctx, report, pointer, &axis[k]);
@@ -91,7 +94,7 @@ static int run_drain(cli_run* run) {
     if (strcmp(holes, "auto") != 0) {
         char* end = NULL;
         const long k = strtol(holes, &end, 10);
-        if (!end || *end != '\0' || k < 1 || k > 1000) return cli_usage_error(run, "--holes takes auto or a count >= 1");
+        if (!end || *end != '\0' || k < 1 || k > INT_MAX) return cli_usage_error(run, "--holes takes auto or a count >= 1");
         drain.hole_count = (int)k;
     }
     drain.repose_degrees = cli_get(run, "--repose")->number;

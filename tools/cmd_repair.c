@@ -31,10 +31,6 @@ static int run_repair(cli_run* run) {
     options.min_shell_volume = cli_get(run, "--min-shell-volume")->number;
     if (cli_get(run, "--no-snap")->given) options.flags |= FABVDB_REPAIR_NO_SNAP;
     if (cli_get(run, "--volumetric")->given) options.flags |= FABVDB_REPAIR_VOLUMETRIC;
-    if (options.resolution < 8) return cli_usage_error(run, "--resolution must be at least 8");
-    if (!(options.adaptivity >= 0.0 && options.adaptivity <= 1.0))
-        return cli_usage_error(run, "--adaptivity must be between 0 and 1");
-    if (!(options.min_shell_volume >= 0.0)) return cli_usage_error(run, "--min-shell-volume must be >= 0");
 
     fabvdb_mesh* mesh = NULL;
     int code = cli_read_input(run, run->positional[0], &mesh);

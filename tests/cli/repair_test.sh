@@ -27,6 +27,14 @@ expect_exit 0 "$FABVDB" repair "$WORK/sheet.obj" -o "$WORK/thick.stl" --voxel 0.
 expect_exit 0 "$FABVDB" info "$WORK/thick.stl" --report "$WORK/thick.json"
 expect_match "$(cat "$WORK/thick.json")" '"closed": true'
 
+# Ranges are checked once, in the library; the command maps its
+# invalid-argument status to exit 1 and writes nothing.
+expect_exit 1 "$FABVDB" repair "$MESHES/cube_no_bottom.obj" -o "$WORK/range.stl" --adaptivity 2
+expect_match "$STDERR" "adaptivity must be in \[0, 1\]"
+expect_exit 1 "$FABVDB" repair "$MESHES/cube_no_bottom.obj" -o "$WORK/range.stl" --resolution 4
+expect_match "$STDERR" "resolution must be >= 8"
+expect_no_file "$WORK/range.stl"
+
 # A soup of 100 unrelated, partly crossing triangles encloses nothing:
 # refused at once with exit 2 (before, this one took 24 s and wrote a
 # 155k-triangle mesh with 132 crossing pairs, exit 0), and made a closed
