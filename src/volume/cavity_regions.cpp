@@ -33,23 +33,22 @@ bool ray_crosses(const Vec3& origin, const Vec3& a, const Vec3& b, const Vec3& c
 std::vector<CavityRegion> split_cavity_regions(const Mesh& cavity_surface) {
     const Mesh& mesh = cavity_surface;
     const std::vector<MeshShell> shells = split_shells(mesh);
-
-    // Each outer shell starts a region; each island joins the smallest outer
-    // shell around one of its vertices.
+    std::vector<size_t> region_outer;  // the outer shell of each region
     std::vector<int> region_of_shell(shells.size(), -1);
-    std::vector<size_t> region_outer;
     for (size_t s = 0; s < shells.size(); ++s)
         if (shells[s].volume > 0.0) {
             region_of_shell[s] = int(region_outer.size());
             region_outer.push_back(s);
         }
-    for (size_t s = 0; s < shells.size(); ++s) {
-        if (region_of_shell[s] >= 0) continue;
+    // The region whose outer shell is the smallest around shell s (other than
+    // its own), by the parity of a ray from one of its vertices; -1: none.
+    const auto smallest_around = [&](size_t s) {
         const Vec3& probe = mesh.vertices[mesh.triangles[shells[s].triangles.front()][0]];
         double smallest = INFINITY;
+        int around = -1;
         for (size_t r = 0; r < region_outer.size(); ++r) {
             const size_t outer = region_outer[r];
-            if (shells[outer].volume >= smallest) continue;
+            if (outer == s || shells[outer].volume >= smallest) continue;
             size_t crossings = 0;
             for (uint32_t t : shells[outer].triangles) {
                 const Triangle& tri = mesh.triangles[t];
@@ -57,29 +56,23 @@ std::vector<CavityRegion> split_cavity_regions(const Mesh& cavity_surface) {
             }
             if (crossings % 2 == 1) {
                 smallest = shells[outer].volume;
-                region_of_shell[s] = int(r);
+                around = int(r);
             }
         }
-    }
-
+        return around;
+    };
     std::vector<CavityRegion> regions(region_outer.size());
-    std::vector<uint32_t> new_index(mesh.vertices.size(), UINT32_MAX);
+    for (size_t r = 0; r < region_outer.size(); ++r) regions[r].in_island = smallest_around(region_outer[r]) >= 0;
+    for (size_t s = 0; s < shells.size(); ++s)
+        if (region_of_shell[s] < 0) region_of_shell[s] = smallest_around(s);
+
     for (size_t s = 0; s < shells.size(); ++s) {
         if (region_of_shell[s] < 0) continue;  // an island outside every outer shell bounds no void
         CavityRegion& region = regions[size_t(region_of_shell[s])];
+        const bool island = shells[s].volume <= 0.0;
         region.volume += shells[s].volume;
-        for (uint32_t t : shells[s].triangles) {
-            Triangle out;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = mesh.triangles[t][k];
-                if (new_index[v] == UINT32_MAX) {
-                    new_index[v] = uint32_t(region.surface.vertices.size());
-                    region.surface.vertices.push_back(mesh.vertices[v]);
-                }
-                out[k] = new_index[v];
-            }
-            region.surface.triangles.push_back(out);
-        }
+        if (island) region.island_volume -= shells[s].volume;
+        append(island ? region.islands : region.surface, sub_mesh(mesh, shells[s].triangles));
     }
     return regions;
 }

@@ -19,6 +19,7 @@
 #include "volume/clean_solid.h"
 #include "volume/extract_mesh.h"
 #include "volume/memory_estimate.h"
+#include "volume/mesh_shells.h"
 #include "volume/repair.h"
 #include "volume/resolve_crossings.h"
 #include "volume/signed_distance.h"
@@ -215,15 +216,30 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     result.min_wall_at_vertices = snapped.min_depth;
     clock.lap("snap");
 
-    // Keep the voids large enough, fill the others.
+    // Keep the voids large enough, fill the others. Solid left floating in a
+    // void (where the opening closes around a pocket) would print loose: it
+    // becomes void, and so does any void inside it.
     Mesh kept;
+    size_t islands = 0;
+    double island_volume = 0.0;
     for (const CavityRegion& region : split_cavity_regions(cavity_surface)) {
-        if (region.volume >= options.min_cavity_volume && region.volume > 0.0) {
-            result.cavity_volumes.push_back(region.volume);
+        if (region.in_island) continue;
+        islands += split_shells(region.islands).size();
+        island_volume += region.island_volume;
+        const double volume = region.volume + region.island_volume;
+        if (volume >= options.min_cavity_volume && volume > 0.0) {
+            result.cavity_volumes.push_back(volume);
             append(kept, region.surface);
         } else {
-            result.filled_cavity_volumes.push_back(region.volume);
+            result.filled_cavity_volumes.push_back(volume);
         }
+    }
+    if (islands > 0) {
+        std::ostringstream message;
+        message.precision(3);
+        message << options.input_name << ": removed " << islands << " piece(s) of solid (" << island_volume
+                << " mm³) that the cavity left floating inside it, which would print loose";
+        result.warnings.push_back(message.str());
     }
     clock.lap("cavity regions");
     require_disjoint_surfaces(outer, kept, options.input_name, progress);

@@ -64,6 +64,16 @@ expect_match "$(cat "$WORK/thin.json")" '"cavity_count": 0'
 check_hollowed "$WORK/thin.stl" "$WORK/thin.json"
 expect_match "$(cat "$WORK/info.json")" '"components": 1'
 
+# Solid that the closed cavity leaves floating inside it would print loose:
+# it becomes void, with a warning (3DBenchy at 100 mm: a 0.27 mm³ piece
+# beside the cabin floor, 0.46 mm from the cavity around it). The output is
+# the outer surface and one cavity, nothing else.
+expect_exit 0 "$FABVDB" hollow "$SHARED/corpus/3DBenchy.3mf" --fit 100mm -o "$WORK/benchy.stl" --wall 3mm \
+  --closing 2mm --report "$WORK/benchy.json"
+expect_match "$STDERR" "warning: .*floating inside it"
+check_hollowed "$WORK/benchy.stl" "$WORK/benchy.json"
+expect_match "$(cat "$WORK/info.json")" '"components": 2'
+
 # Bad parameters: exit 1 (or 3 for the budget) and no output.
 expect_exit 1 "$FABVDB" hollow "$MESHES/sphere.obj" --fit 40mm -o "$WORK/bad.stl" --wall 0mm
 expect_match "$STDERR" "wall"

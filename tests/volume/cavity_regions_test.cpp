@@ -1,7 +1,8 @@
 // split_cavity_regions on boxes whose voids are known: one void (volume 1),
-// a void with a floating island (64 − 1), two voids in their outer shells'
-// order with each island in its own, nested voids where an island joins the
-// smallest outer shell around it (in either listing order), an island in no
+// a void with a floating island (64 − 1, the island apart), two voids in
+// their outer shells' order with each island in its own, nested voids where
+// an island joins the smallest outer shell around it and the inner void is
+// marked as lying in an island (in either listing order), an island in no
 // void (dropped) and an empty surface.
 #include "volume/cavity_regions.h"
 
@@ -34,10 +35,14 @@ TEST(CavityRegions, IslandBelongsToTheVoidAroundIt) {
     const std::vector<CavityRegion> regions = split_cavity_regions(merged(cube(0, 4), flipped(cube(1, 2))));
     ASSERT_EQ(regions.size(), 1u);
     EXPECT_NEAR(regions[0].volume, 64.0 - 1.0, 1e-12);
-    EXPECT_EQ(regions[0].surface.vertices.size(), 16u);
-    EXPECT_EQ(regions[0].surface.triangles.size(), 24u);
+    EXPECT_NEAR(regions[0].island_volume, 1.0, 1e-12);
+    EXPECT_FALSE(regions[0].in_island);
+    EXPECT_EQ(regions[0].surface.vertices.size(), 8u);
+    EXPECT_EQ(regions[0].surface.triangles.size(), 12u);
     EXPECT_TRUE(test::closed_two_manifold(regions[0].surface));
-    EXPECT_NEAR(test::mesh_volume(regions[0].surface), 63.0, 1e-12);
+    EXPECT_NEAR(test::mesh_volume(regions[0].surface), 64.0, 1e-12);
+    EXPECT_EQ(regions[0].islands.triangles.size(), 12u);
+    EXPECT_NEAR(test::mesh_volume(regions[0].islands), -1.0, 1e-12);
 }
 
 TEST(CavityRegions, SeparateVoidsInTheOrderOfTheirOuterShells) {
@@ -49,7 +54,9 @@ TEST(CavityRegions, SeparateVoidsInTheOrderOfTheirOuterShells) {
     EXPECT_NEAR(regions[0].volume, 8.0, 1e-12);
     EXPECT_EQ(regions[0].surface.triangles.size(), 12u);
     EXPECT_NEAR(regions[1].volume, 64.0 - 2.0, 1e-12);
-    EXPECT_EQ(regions[1].surface.triangles.size(), 24u);
+    EXPECT_EQ(regions[1].surface.triangles.size(), 12u);
+    EXPECT_EQ(regions[1].islands.triangles.size(), 12u);
+    EXPECT_TRUE(regions[0].islands.triangles.empty());
     // Each region's surface holds its own vertices only.
     for (const Vec3& p : regions[0].surface.vertices) EXPECT_GE(p[0], 10.0);
     for (const Vec3& p : regions[1].surface.vertices) EXPECT_LE(p[0], 4.0);
@@ -70,8 +77,14 @@ TEST(CavityRegions, NestedVoidsTakeTheSmallestOuterShell) {
         const CavityRegion& inner = regions[small_first ? 0 : 1];
         EXPECT_NEAR(outer.volume, 1000.0 - 512.0, 1e-9);
         EXPECT_NEAR(inner.volume, 216.0 - 1.0, 1e-9);
-        EXPECT_EQ(outer.surface.triangles.size(), 24u);
-        EXPECT_EQ(inner.surface.triangles.size(), 24u);
+        EXPECT_EQ(outer.surface.triangles.size(), 12u);
+        EXPECT_EQ(outer.islands.triangles.size(), 12u);
+        EXPECT_EQ(inner.surface.triangles.size(), 12u);
+        EXPECT_EQ(inner.islands.triangles.size(), 12u);
+        EXPECT_NEAR(outer.island_volume, 512.0, 1e-9);
+        // The inner void lies in the outer void's island.
+        EXPECT_FALSE(outer.in_island);
+        EXPECT_TRUE(inner.in_island);
     }
 }
 
