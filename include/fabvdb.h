@@ -10,7 +10,9 @@
  *   - No call throws or aborts; a cancelled call never returns a partial result.
  *   - Option structs have an _init() that sets struct_size and the defaults.
  *     A caller built against an older header passes its older, smaller
- *     struct: the fields it does not know keep their defaults.
+ *     struct: the fields it does not know keep their defaults. A struct the
+ *     library fills (info, part info, options out) is written only as far
+ *     as the caller's struct_size.
  *   - Lengths are millimetres.
  *   - A context may be used by one thread at a time; fabvdb_ctx_cancel() is the
  *     one call that is safe from any thread. Distinct contexts are independent.
@@ -641,7 +643,7 @@ FABVDB_API void fabvdb_decomposition_free(fabvdb_decomposition* session);
 
 /* Applies one edit. On success it is a new undoable step and the redo steps
  * are dropped. Returns FABVDB_OK, FABVDB_ERR_INVALID_ARGUMENT (NULL handle,
- * struct_size too small, an unknown type), FABVDB_ERR_BAD_INPUT (a malformed
+ * struct_size not set or from a newer header, an unknown type), FABVDB_ERR_BAD_INPUT (a malformed
  * edit: no points, a non-finite point, radius <= 0 for a brush, a cut of
  * fewer than two points, a merge not of two; or an edit that does not apply:
  * a cut that separates nothing, a merge of one part or of parts that do not

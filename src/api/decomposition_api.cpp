@@ -59,11 +59,6 @@ void fill_if(bool& done, const std::function<void()>& fill) {
     done = true;
 }
 
-void require_size(size_t struct_size, size_t needed, const char* name) {
-    if (struct_size < needed)
-        throw Error(FABVDB_ERR_INVALID_ARGUMENT, std::string(name) + ": struct_size is not set (call its _init)");
-}
-
 }  // namespace
 
 void fabvdb_decomposition::fill_mesh() const {
@@ -185,7 +180,8 @@ fabvdb_status fabvdb_decomposition_apply(fabvdb_ctx* ctx, fabvdb_decomposition* 
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(session, "session");
         fabvdb::api::require(edit, "edit");
-        require_size(edit->struct_size, sizeof(fabvdb_edit), "edit");
+        const fabvdb_edit given = fabvdb::api::options_from(edit, fabvdb_edit_init, "fabvdb_edit");
+        edit = &given;
         Edit e;
         switch (edit->type) {
             case FABVDB_EDIT_NO_CUT: e.type = Edit::no_cut; break;
@@ -232,7 +228,9 @@ fabvdb_status fabvdb_decomposition_rerun(fabvdb_ctx* ctx, fabvdb_decomposition* 
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(session, "session");
         fabvdb::api::require(opts, "opts");
-        require_size(opts->struct_size, sizeof(fabvdb_decompose_options), "opts");
+        const fabvdb_decompose_options given =
+            fabvdb::api::options_from(opts, fabvdb_decompose_options_init, "fabvdb_decompose_options");
+        opts = &given;
         // The fields rerun does not read are those the session was made with.
         fabvdb_decompose_options merged = session->made_with;
         merged.gamma = opts->gamma;
@@ -259,7 +257,6 @@ fabvdb_status fabvdb_decomposition_get_options(fabvdb_ctx* ctx, const fabvdb_dec
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(session, "session");
         fabvdb::api::require(out, "out");
-        require_size(out->struct_size, sizeof(fabvdb_decompose_options), "out");
         const DecompositionSession& s = *session->session;
         fabvdb_decompose_options o = session->made_with;
         o.gamma = s.options().gamma;
@@ -271,8 +268,7 @@ fabvdb_status fabvdb_decomposition_get_options(fabvdb_ctx* ctx, const fabvdb_dec
         o.w_coarse_overlap = s.options().overlap_weight;
         o.smoothing_iterations = s.options().smoothing_iterations;
         o.w_smooth = s.options().smoothness_weight;
-        o.struct_size = out->struct_size < sizeof o ? out->struct_size : sizeof o;
-        *out = o;
+        fabvdb::api::write_to(o, out, "fabvdb_decompose_options");
     });
 }
 
@@ -300,7 +296,6 @@ fabvdb_status fabvdb_decomposition_get_info(fabvdb_ctx* ctx, const fabvdb_decomp
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(session, "session");
         fabvdb::api::require(out, "out");
-        require_size(out->struct_size, sizeof(fabvdb_decomposition_info), "out");
         const DecompositionSession& s = *session->session;
         fabvdb_decomposition_info info;
         fabvdb_decomposition_info_init(&info);
@@ -313,7 +308,7 @@ fabvdb_status fabvdb_decomposition_get_info(fabvdb_ctx* ctx, const fabvdb_decomp
         info.redo_steps = s.redo_steps();
         info.edit_count = s.edits().size();
         info.last_step_seconds = session->last_seconds;
-        *out = info;
+        fabvdb::api::write_to(info, out, "fabvdb_decomposition_info");
     });
 }
 
@@ -322,7 +317,6 @@ fabvdb_status fabvdb_decomposition_get_part(fabvdb_ctx* ctx, const fabvdb_decomp
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(session, "session");
         fabvdb::api::require(out, "out");
-        require_size(out->struct_size, sizeof(fabvdb_part_info), "out");
         const DecompositionSession& s = *session->session;
         const auto& d = s.decomposition();
         if (part >= d.parts.size())
@@ -343,7 +337,7 @@ fabvdb_status fabvdb_decomposition_get_part(fabvdb_ctx* ctx, const fabvdb_decomp
                 ++info.triangle_count;
             }
         info.area = area / (s.shell().unit_scale * s.shell().unit_scale);
-        *out = info;
+        fabvdb::api::write_to(info, out, "fabvdb_part_info");
     });
 }
 

@@ -5,7 +5,9 @@
  * integers, wild pointers): if the library read past struct_size it would
  * reject the options, or crash on the pointers. A struct_size of 0 (never
  * set) or larger than the library's (a newer header) is an invalid argument.
- * The prefix is read: a field set in it shows in the result. C, fabvdb.h only. */
+ * The prefix is read: a field set in it shows in the result. The structs a
+ * decomposition session fills (info, part, its options) are written only as
+ * far as the caller's struct_size. C, fabvdb.h only. */
 #define _DEFAULT_SOURCE /* mkdtemp */
 #include <math.h>
 #include <stddef.h>
@@ -156,6 +158,48 @@ int main(void) {
         CHECK(count(ctx, report, "/parts") >= 1);
         fabvdb_report_free(report);
         report = NULL;
+
+        /* A session from the older options; the structs it fills are
+         * written only as far as the caller's struct_size (the bytes past
+         * it stay 0xFF), and an older edit or rerun struct is read. */
+        fabvdb_decomposition* session = NULL;
+        CHECK(fabvdb_decomposition_new(ctx, sphere, old, &session) == FABVDB_OK);
+        const unsigned char untouched[sizeof(double)] = {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF};
+        fabvdb_decomposition_info full_info;
+        fabvdb_decomposition_info_init(&full_info);
+        fabvdb_decomposition_info* info =
+            older(&full_info, sizeof full_info, offsetof(fabvdb_decomposition_info, undo_steps));
+        CHECK(fabvdb_decomposition_get_info(ctx, session, info) == FABVDB_OK);
+        CHECK(info->struct_size == offsetof(fabvdb_decomposition_info, undo_steps) && info->part_count >= 1);
+        CHECK(memcmp(&info->last_step_seconds, untouched, sizeof untouched) == 0);
+        fabvdb_part_info full_part;
+        fabvdb_part_info_init(&full_part);
+        fabvdb_part_info* part = older(&full_part, sizeof full_part, offsetof(fabvdb_part_info, area));
+        CHECK(fabvdb_decomposition_get_part(ctx, session, 0, part) == FABVDB_OK);
+        CHECK(part->energy > 0 && memcmp(&part->area, untouched, sizeof untouched) == 0);
+        fabvdb_decompose_options* now = older(&full, sizeof full, offsetof(fabvdb_decompose_options, w_smooth));
+        CHECK(fabvdb_decomposition_get_options(ctx, session, now) == FABVDB_OK);
+        CHECK(now->low_res_triangles == 800 && memcmp(&now->w_smooth, untouched, sizeof untouched) == 0);
+        CHECK(fabvdb_decomposition_rerun(ctx, session, old) == FABVDB_OK);
+        fabvdb_edit full_edit;
+        fabvdb_edit_init(&full_edit);
+        const double point[3] = {20, 0, 0};
+        full_edit.points = point;
+        full_edit.point_count = 1;
+        full_edit.radius = 0; /* in the prefix: refused for a brush */
+        fabvdb_edit* edit = older(&full_edit, sizeof full_edit, offsetof(fabvdb_edit, flags));
+        CHECK(fabvdb_decomposition_apply(ctx, session, edit) == FABVDB_ERR_BAD_INPUT);
+        CHECK(strstr(fabvdb_last_error(ctx), "radius") != NULL);
+        set_struct_size(edit, 0);
+        CHECK(fabvdb_decomposition_apply(ctx, session, edit) == FABVDB_ERR_INVALID_ARGUMENT);
+        set_struct_size(info, sizeof full_info + 8);
+        CHECK(fabvdb_decomposition_get_info(ctx, session, info) == FABVDB_ERR_INVALID_ARGUMENT);
+        free(edit);
+        free(now);
+        free(part);
+        free(info);
+        fabvdb_decomposition_free(session);
+
         set_struct_size(old, 0);
         snprintf(out_dir, sizeof out_dir, "%s/not_written", base);
         CHECK(fabvdb_mesh_decompose(ctx, sphere, old, NULL, out_dir, &report) == FABVDB_ERR_INVALID_ARGUMENT);
