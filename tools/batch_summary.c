@@ -59,8 +59,9 @@ static void write_task(FILE* out, const batch_task* task, const task_state* s, i
         json_write_string(out, json_get_string(r, "message", ""));
         fputs(", \"failed_line\": ", out);
         json_write_number(out, json_get_number(r, "failed_line", NAN));
-        fputs(", \"seconds\": ", out);
+        fputs(", \"timings\": {\"total\": ", out);
         json_write_number(out, json_get_number(r, "seconds", NAN));
+        fputc('}', out);
         fputs(", \"peak_memory_bytes\": ", out);
         json_write_number(out, json_get_number(r, "peak_memory_bytes", NAN));
         fputs(", \"slurm_job\": ", out);
@@ -94,6 +95,24 @@ static void write_task(FILE* out, const batch_task* task, const task_state* s, i
     fputc('}', out);
 }
 
+/* The summary's `timings`: `tasks`, the sum of the recorded tasks' wall times,
+ * and `total`, from the first recorded start to the last recorded end. */
+static void write_timings(FILE* out, const batch_plan* plan, const task_state* states) {
+    double tasks = 0.0, first = INFINITY, last = -INFINITY;
+    for (int k = 0; k < plan->task_count; ++k) {
+        const json_value* r = states[k].record;
+        if (!r) continue;
+        tasks += json_get_number(r, "seconds", 0.0);
+        first = fmin(first, json_get_number(r, "started_epoch", INFINITY));
+        last = fmax(last, json_get_number(r, "ended_epoch", -INFINITY));
+    }
+    fputs("  \"timings\": {\"tasks\": ", out);
+    json_write_number(out, tasks);
+    fputs(", \"total\": ", out);
+    json_write_number(out, last >= first ? last - first : 0.0);
+    fputs("},\n", out);
+}
+
 static int write_json(const char* path, const char* state, const batch_plan* plan, const task_state* states,
                       const batch_counts* counts, int figures) {
     batch_atomic file;
@@ -101,10 +120,11 @@ static int write_json(const char* path, const char* state, const batch_plan* pla
     FILE* out = file.out;
     char now[64];
     batch_format_time(batch_now(), now, sizeof now);
-    fprintf(out, "{\n  \"format\": \"%s\",\n  \"state\": ", figures ? "fabvdb-batch-report 1" : "fabvdb-batch-status 1");
+    fprintf(out, "{\n  \"format\": \"%s\",\n  \"state\": ", figures ? "fabvdb-batch-report 2" : "fabvdb-batch-status 2");
     json_write_string(out, state);
     fprintf(out, ",\n  \"written\": \"%s\",\n  \"tasks\": %d, \"done\": %d, \"failed\": %d, \"pending\": %d,\n", now,
             counts->tasks, counts->done, counts->failed, counts->pending);
+    write_timings(out, plan, states);
     fputs("  \"task_list\": [\n", out);
     for (int k = 0; k < plan->task_count; ++k) {
         write_task(out, &plan->tasks[k], &states[k], figures);

@@ -36,7 +36,7 @@ static const cli_option options[] = {
     {"--status", 0, CLI_STRING, "STATE", NULL,
      "print what the state folder says (done / failed with why / pending) and write STATE/status.json"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL,
-     "write the batch summary: per task input, status, exit code, message, seconds, peak memory, key figures"},
+     "write the batch summary: per task input, status, exit code, message, wall time, peak memory, key figures"},
     {"--slurm", 0, CLI_FLAG, NULL, NULL, "submit the tasks to Slurm as one job array instead of running them here"},
     {"--partition", 0, CLI_STRING, "P", NULL, "the Slurm partition (with --slurm)"},
     {"--max-running", 0, CLI_INT, "K", "0", "at most K array tasks at once (with --slurm; 0: as Slurm allows)"},

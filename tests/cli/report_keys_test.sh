@@ -3,7 +3,8 @@
 # unit suffix (_mm, _mm3, _s, seconds: the unit comes from the quantity),
 # fractions in [0, 1], angles in degrees, and a top-level `timings` object of
 # non-negative seconds with `total` (nested `timings` objects hold numbers
-# too). Small inputs and coarse settings keep it quick.
+# too), the batch summary included. Small inputs and coarse settings keep it
+# quick.
 source "$(dirname "$0")/lib.sh"
 SPHERE="$SOURCE/data/sphere.obj"
 
@@ -18,8 +19,10 @@ expect_exit 0 "$FABVDB" decompose "$SPHERE" --fit 40mm --low-res 800 --smoothing
   --report "$WORK/decompose.json" --quiet
 expect_exit 0 "$FABVDB" mold "$SPHERE" --fit 40mm --decomposition "$WORK/decomposition/decomposition.json" \
   --voxel 0.8mm --mold-margin 6mm -o "$WORK/molds" --report "$WORK/mold.json" --quiet
+printf 'fabvdb-job 1\ninfo "%s" --report "%s/batch-info.json"\n' "$SPHERE" "$WORK" > "$WORK/keys.job"
+expect_exit 0 "$FABVDB" batch "$WORK/keys.job" --report "$WORK/batch.json" --quiet
 
-expect_exit 0 python3 - "$WORK"/{info,repair,hollow,drain,powder-sim,decompose,mold}.json <<'PY'
+expect_exit 0 python3 - "$WORK"/{info,repair,hollow,drain,powder-sim,decompose,mold,batch}.json <<'PY'
 import json, re, sys
 
 NAME = re.compile(r'^[a-z][a-z0-9_]*$')
