@@ -98,7 +98,8 @@ public:
         while (!stack.empty()) {
             const size_t i = stack.back();
             stack.pop_back();
-            const int z = int(i % n_[2]), y = int((i / n_[2]) % n_[1]), x = int(i / (size_t(n_[2]) * n_[1]));
+            int x, y, z;
+            coordinates(i, x, y, z);
             const int step[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
             for (const auto& s : step) {
                 const int a = x + s[0], b = y + s[1], c = z + s[2];
@@ -117,6 +118,11 @@ public:
     }
 
     size_t index(int x, int y, int z) const { return (size_t(x) * n_[1] + y) * n_[2] + z; }
+    void coordinates(size_t i, int& x, int& y, int& z) const {
+        z = int(i % n_[2]);
+        y = int((i / n_[2]) % n_[1]);
+        x = int(i / (size_t(n_[2]) * n_[1]));
+    }
     bool inside(int x, int y, int z) const {
         return x >= 0 && y >= 0 && z >= 0 && x < n_[0] && y < n_[1] && z < n_[2];
     }
@@ -124,7 +130,9 @@ public:
         return axes_ * (origin_ + h_ * Eigen::Vector3d(x + 0.5, y + 0.5, z + 0.5));
     }
     Eigen::Vector3d world(size_t i) const {
-        return world(int(i / (size_t(n_[2]) * n_[1])), int((i / n_[2]) % n_[1]), int(i % n_[2]));
+        int x, y, z;
+        coordinates(i, x, y, z);
+        return world(x, y, z);
     }
     //! The cell holding world point p, or false if p is outside the frame.
     bool cell_of(const Eigen::Vector3d& p, int& x, int& y, int& z) const {
@@ -137,6 +145,7 @@ public:
 
     const std::array<int, 3>& size() const { return n_; }
     std::vector<uint8_t>& cells() { return cells_; }
+    const std::vector<uint8_t>& cells() const { return cells_; }
 
 private:
     double h_;
@@ -261,50 +270,83 @@ bool buried(const Frame& frame, const std::vector<uint8_t>& cells, size_t i, int
     return true;
 }
 
-//! Runs falls and topples until the pile rests; returns how many grains left.
-//! Every pass visits the grains in order, as one sweep over all of them
-//! would, but skips the buried ones (a visit to them changes nothing): a
-//! grain is marked active until a visit finds it buried, and marked again
-//! when the cell below it or beside it is vacated. The pile's interior thus
-//! costs nothing per pass, only its surface does.
-size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose, int window, Progress& progress) {
-    auto& cells = frame.cells();
-    const auto& n = frame.size();
-    const size_t column_stride = size_t(n[2]);
-    const ReposeSteps steps(tan_repose, window);
-    const size_t removed_mark = SIZE_MAX;
-    size_t removed = 0;
-
-    constexpr uint32_t kNoSlot = UINT32_MAX;
-    std::vector<uint32_t> slot_of(cells.size(), kNoSlot);
-    for (size_t g = 0; g < grains.size(); ++g) slot_of[grains[g]] = uint32_t(g);
-    std::vector<uint64_t> active((grains.size() + 63) / 64, ~uint64_t(0));
-    if (grains.size() % 64) active.back() = (uint64_t(1) << (grains.size() % 64)) - 1;
-    const auto deactivate = [&](size_t g) { active[g / 64] &= ~(uint64_t(1) << (g % 64)); };
-    // The grains that may move now that cell `c` (at x, y, z) is vacated.
-    const auto wake_around = [&](size_t c, int x, int y, int z) {
-        const auto wake = [&](size_t k) {
-            if (cells[k] == kGrain && slot_of[k] != kNoSlot) active[slot_of[k] / 64] |= uint64_t(1) << (slot_of[k] % 64);
-        };
-        if (z + 1 < n[2]) wake(c + 1);
-        for (const auto& d : kDirections)
-            if (frame.inside(x + d[0], y + d[1], z)) wake(frame.index(x + d[0], y + d[1], z));
-    };
-    // The next active grain at or after slot g, or grains.size().
-    const auto next_active = [&](size_t g) {
-        for (size_t w = g / 64; w < active.size(); ++w) {
-            uint64_t bits = active[w];
+//! The grains a pass visits. Every pass visits the grains in order, as one
+//! sweep over all of them would, but skips the buried ones (a visit to them
+//! changes nothing): a grain is active until a visit finds it buried, and
+//! active again when the cell below it or beside it is vacated. The pile's
+//! interior thus costs nothing per pass, only its surface does.
+class ActiveGrains {
+public:
+    ActiveGrains(const Frame& frame, const std::vector<size_t>& grains)
+        : frame_(frame), count_(grains.size()), slot_of_(frame.cells().size(), kNoSlot),
+          bits_((grains.size() + 63) / 64, ~uint64_t(0)) {
+        for (size_t g = 0; g < grains.size(); ++g) slot_of_[grains[g]] = uint32_t(g);
+        if (count_ % 64) bits_.back() = (uint64_t(1) << (count_ % 64)) - 1;
+    }
+    //! The next active grain at or after slot g, or the grain count.
+    size_t next(size_t g) const {
+        for (size_t w = g / 64; w < bits_.size(); ++w) {
+            uint64_t bits = bits_[w];
             if (w == g / 64) bits &= ~uint64_t(0) << (g % 64);
             if (bits) return w * 64 + size_t(__builtin_ctzll(bits));
         }
-        return grains.size();
-    };
-    const auto coordinates = [&](size_t i, int& x, int& y, int& z) {
-        z = int(i % n[2]);
-        y = int((i / n[2]) % n[1]);
-        x = int(i / (column_stride * n[1]));
-    };
+        return count_;
+    }
+    void deactivate(size_t g) { bits_[g / 64] &= ~(uint64_t(1) << (g % 64)); }
+    //! Grain g now lies in cell i.
+    void moved(size_t g, size_t i) { slot_of_[i] = uint32_t(g); }
+    //! Activates the grains that may move now that cell c at (x, y, z) is vacated.
+    void wake_around(size_t c, int x, int y, int z) {
+        const auto& cells = frame_.cells();
+        const auto wake = [&](size_t k) {
+            if (cells[k] == kGrain && slot_of_[k] != kNoSlot) bits_[slot_of_[k] / 64] |= uint64_t(1) << (slot_of_[k] % 64);
+        };
+        if (z + 1 < frame_.size()[2]) wake(c + 1);
+        for (const auto& d : kDirections)
+            if (frame_.inside(x + d[0], y + d[1], z)) wake(frame_.index(x + d[0], y + d[1], z));
+    }
 
+private:
+    static constexpr uint32_t kNoSlot = UINT32_MAX;
+    const Frame& frame_;
+    size_t count_;
+    std::vector<uint32_t> slot_of_;
+    std::vector<uint64_t> bits_;
+};
+
+enum class Visit { rested, buried, toppled, fell, left };
+
+//! One visit to the grain in cell `i`: it falls through free cells, or else
+//! topples one cell the steepest way the repose allows (ties broken by `pass`
+//! and the cell, so they go different ways), or rests. `i` follows the grain;
+//! a grain that reaches the outside has left (the cell stays outside).
+Visit visit_grain(Frame& frame, const ReposeSteps& steps, ActiveGrains& active, size_t pass, size_t& i) {
+    auto& cells = frame.cells();
+    int x, y, z;
+    frame.coordinates(i, x, y, z);
+    const size_t from = i;
+    const int from_z = z;
+    if (fall(cells, i, z)) {
+        active.wake_around(from, x, y, from_z);
+        return cells[i] == kOutside ? Visit::left : Visit::fell;
+    }
+    const int best = steepest_topple(frame, cells, steps, x, y, z, int((i * 2654435761u + pass) & 7u));
+    if (best < 0) return buried(frame, cells, i, x, y, z) ? Visit::buried : Visit::rested;
+    i = frame.index(x + kDirections[best][0], y + kDirections[best][1], z);
+    cells[from] = kFree;
+    active.wake_around(from, x, y, z);
+    if (cells[i] == kOutside) return Visit::left;
+    cells[i] = kGrain;
+    return Visit::toppled;
+}
+
+//! Runs falls and topples until the pile rests; returns how many grains left
+//! (they are taken out of `grains`).
+size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose, int window, Progress& progress) {
+    const ReposeSteps steps(tan_repose, window);
+    ActiveGrains active(frame, grains);
+    const size_t removed_mark = SIZE_MAX;
+    size_t removed = 0;
     // A grain that topples is above lower ground within `window` steps, so it
     // falls or leaves within that many passes unless the pile is only
     // jiggling: stop after that many passes with no fall and no exit.
@@ -312,44 +354,24 @@ size_t settle_pile(Frame& frame, std::vector<size_t>& grains, double tan_repose,
     for (size_t pass = 0; passes_without_descent <= window + 1; ++pass) {
         if (progress.cancelled()) break;
         size_t moved = 0, descended = 0;
-        for (size_t g = next_active(0); g < grains.size(); g = next_active(g + 1)) {
+        for (size_t g = active.next(0); g < grains.size(); g = active.next(g + 1)) {
             size_t i = grains[g];
-            const size_t from = i;
-            int x, y, z;
-            coordinates(i, x, y, z);
-            if (fall(cells, i, z)) {
-                ++moved;
-                ++descended;
-                wake_around(from, x, y, int(from % n[2]));
-                if (cells[i] == kOutside) {
-                    grains[g] = removed_mark;
-                    deactivate(g);
-                    ++removed;
-                    continue;
-                }
-                grains[g] = i;
-                slot_of[i] = uint32_t(g);
+            const Visit visit = visit_grain(frame, steps, active, pass, i);
+            if (visit == Visit::rested) continue;
+            if (visit == Visit::buried) {
+                active.deactivate(g);
                 continue;
             }
-            const int best = steepest_topple(frame, cells, steps, x, y, z, int((i * 2654435761u + pass) & 7u));
-            if (best < 0) {
-                if (buried(frame, cells, i, x, y, z)) deactivate(g);
-                continue;
-            }
-            const size_t j = frame.index(x + kDirections[best][0], y + kDirections[best][1], z);
-            cells[i] = kFree;
             ++moved;
-            wake_around(i, x, y, z);
-            if (cells[j] == kOutside) {
+            if (visit != Visit::toppled) ++descended;
+            if (visit == Visit::left) {
                 grains[g] = removed_mark;
-                deactivate(g);
+                active.deactivate(g);
                 ++removed;
-                ++descended;
-                continue;
+            } else {
+                grains[g] = i;
+                active.moved(g, i);
             }
-            cells[j] = kGrain;
-            grains[g] = j;
-            slot_of[j] = uint32_t(g);
         }
         if (moved == 0) break;
         passes_without_descent = descended > 0 ? 0 : passes_without_descent + 1;
