@@ -16,11 +16,11 @@ namespace fabvdb::powder {
 namespace {
 
 //! The search's objective: the later turns by the crater's cone, not the
-//! surface of repose the prediction uses: better holes on fertility, 2.5 to 5
-//! times faster (bench_drain; docs/design/drainability.md).
+//! surface of repose the prediction uses: holes as good, 2.5 to 5 times
+//! faster (bench_drain; docs/design/drainability.md).
 constexpr DrainabilityModel::Crater kCrater = DrainabilityModel::Crater::cone;
-//! Sites near a hole the prediction's polish weighs (bench_drain: cat-low-resolution
-//! at 60 mm has about 60 sites within reach of a hole; weighing all took 18 s).
+//! Sites near a hole the prediction's polish weighs; all of them within reach
+//! take seconds (bench_drain; docs/design/drainability.md).
 constexpr size_t kPolishSites = 8;
 
 double distance(const DrainHole& a, const DrainHole& b) {

@@ -100,8 +100,7 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     // than a voxel, or left so by the split between two parts) comes back a
     // voxel thick in the part nearest to it, if within δ of it as restoration
     // reaches; a voxel out is within the level sets' own rounding of sharp
-    // edges (bench/corpus: panther, uccello200, issue1580-back-to-back,
-    // decimated-knight, mat_test).
+    // edges (bench/corpus; docs/design/geometry.md).
     volume::KeepLostSurfaceOptions keep;
     keep.tolerance = result.voxel_size;
     keep.radius = result.voxel_size;

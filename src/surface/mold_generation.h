@@ -39,9 +39,9 @@ struct MoldGenerationOptions {
     double voxel_size = 0.0;
     //! mm: how far the ARAP deformation may move a surface point to close a
     //! small gap (overhang_deformation.h); 0: half a voxel, which keeps every
-    //! moved point within half a voxel of the input (one voxel moved bunny's
-    //! crevice between the ears 1.0% of the diagonal from it). Gaps wider
-    //! than twice this are left to the sweep.
+    //! moved point within half a voxel of the input (bench_mold; a whole
+    //! voxel is too far: docs/design/geometry.md). Gaps wider than twice
+    //! this are left to the sweep.
     double max_deformation = 0.0;
     //! false: no deformation, the sweep alone makes the parts moldable.
     bool deform_overhangs = true;

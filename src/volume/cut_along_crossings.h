@@ -6,9 +6,8 @@
 //! rounded to doubles, and put in order of position (the cut points, each
 //! piece from its least corner, the pieces), so that the order does not
 //! depend on the autorefinement's, which changes from run to run. Their
-//! rounding can: on some inputs (a torus through a box, corpus rabbit.obj)
-//! a few cut points differ by an ulp between runs. Pure; costs ~25 µs a
-//! crossing pair.
+//! rounding can: on some inputs a few cut points differ by an ulp between
+//! runs (docs/design/geometry.md). Pure; costs ~25 µs a crossing pair.
 #pragma once
 
 #include <cstdint>

@@ -36,8 +36,7 @@ namespace fabvdb::volume {
 //! The most crossing pairs resolved for `triangle_count` triangles: a tenth
 //! of the triangles, at least 1024. Cutting costs ~25 µs a pair and the rest
 //! is one ray per patch, so resolving stays within about twice the crossing
-//! test's time (two balls through each other, up to 1248 pairs in 164k
-//! triangles), far under a repair's.
+//! test's time, far under a repair's (docs/design/geometry.md).
 size_t max_crossing_pairs(size_t triangle_count);
 
 std::optional<Mesh> resolve_crossings(const Mesh& mesh, const std::vector<std::pair<uint32_t, uint32_t>>& crossings,

@@ -5,7 +5,7 @@
 //! moved along the distance gradient to depth `wall` (mode exact), or only
 //! when it is shallower than `wall` (mode at_least, for a cavity rounded by a
 //! closing distance). A move that would flip a triangle is undone, so the
-//! surface keeps its orientation and topology. Accuracy no longer depends on
+//! surface keeps its orientation and topology. Accuracy does not depend on
 //! the voxel size: the wall at every vertex is the requested one.
 #pragma once
 

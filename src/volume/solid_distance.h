@@ -10,11 +10,10 @@
 //! distance, a voxel deep at a time, until it is `interior_depth` + 2 voxels
 //! deep: a new voxel takes the nearest of its neighbours' nearest triangles,
 //! at its exact distance to it (closest-triangle propagation: a distance can
-//! only be too large, where the true nearest triangle is no neighbour's;
-//! measured against a CGAL tree on armadillo, kitten and rocker-arm at 0.75
-//! mm voxels: at most 0.13 mm). Inactive values are signed by flood fill, the
-//! background deeper than the band. Cancellable (Error CANCELLED, no partial
-//! grid).
+//! only be too large, where the true nearest triangle is no neighbour's: by
+//! at most 0.13 mm at 0.75 mm voxels, docs/design/geometry.md). Inactive
+//! values are signed by flood fill, the background deeper than the band.
+//! Cancellable (Error CANCELLED, no partial grid).
 #pragma once
 
 #include <openvdb/openvdb.h>
