@@ -145,7 +145,8 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
         const bool volumetric = (chosen.flags & FABVDB_REPAIR_VOLUMETRIC) || repair.distance.thicken > 0.0 ||
                                 repair.min_shell_volume > 0.0;
         std::optional<fabvdb::surface::MeshRepair> fixed;
-        if (!volumetric) fixed = fabvdb::surface::repair_at_mesh_level(mesh->mesh, progress);
+        fabvdb::Mesh oriented;  // the input oriented, when the mesh level did so and failed
+        if (!volumetric) fixed = fabvdb::surface::repair_at_mesh_level(mesh->mesh, progress, &oriented);
         nlohmann::json rest_report;
         if (fixed && !fixed->rest.triangles.empty()) {
             // Some shells need voxels: those alone, then united with the others.
@@ -200,7 +201,9 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
             *out = fabvdb::api::new_mesh_handle(std::move(fixed->mesh), true);
             return;
         }
-        fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
+        repair.distance.oriented = !oriented.triangles.empty();
+        fabvdb::volume::RepairResult result =
+            fabvdb::volume::repair(repair.distance.oriented ? oriented : mesh->mesh, repair, progress);
         nlohmann::json document = repair_report(result, clock.total());
         if (report) document["timings"]["inspect input"] = inspect_seconds;
         if (!volumetric) document["timings"]["mesh level"] = mesh_level_seconds;

@@ -41,7 +41,7 @@ bool is_clean_either_way(const Mesh& mesh, Progress& progress) {
 
 }  // namespace
 
-std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& progress) {
+std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& progress, Mesh* oriented_out) {
     if (input.triangles.empty()) return std::nullopt;
     MeshRepair repair;
     if (std::optional<Mesh> mesh = clean_or_resolved(input, repair.fixes, progress)) {
@@ -64,7 +64,7 @@ std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& prog
             return repair;
         }
     }
-    const Mesh oriented = volume::orient_soup(input, progress);
+    Mesh oriented = volume::orient_soup(input, progress);
     if (oriented.triangles.empty()) return std::nullopt;
     repair.fixes.push_back("welded coincident points, oriented every shell outward");
     if (oriented.triangles.size() < input.triangles.size())
@@ -104,10 +104,13 @@ std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& prog
     if (holes > 0)
         repair.fixes.push_back("filled " + std::to_string(holes) + " small holes with " +
                                std::to_string(hole_triangles) + " faired triangles");
-    if (exact.triangles.empty()) return std::nullopt;
     // The shells kept must still make one clean solid together.
-    std::optional<Mesh> mesh = clean_or_resolved(exact, repair.fixes, progress);
-    if (!mesh) return std::nullopt;
+    std::optional<Mesh> mesh;
+    if (!exact.triangles.empty()) mesh = clean_or_resolved(exact, repair.fixes, progress);
+    if (!mesh) {
+        if (oriented_out) *oriented_out = std::move(oriented);
+        return std::nullopt;
+    }
     repair.path = "mesh";
     repair.mesh = std::move(*mesh);
     return repair;

@@ -17,8 +17,10 @@
 //!     shells kept must make one clean solid together (their crossings
 //!     resolved).
 //! Returns nothing when no shell can be kept, or the kept ones do not make a
-//! clean solid together. Costs a few exact crossing tests; reports
-//! progress, throws Error(CANCELLED).
+//! clean solid together; `oriented`, when given, then receives the input as
+//! orient_soup made it in step 3 (empty if step 3 was not reached), so that
+//! the volumetric repair need not orient it again. Costs a few exact
+//! crossing tests; reports progress, throws Error(CANCELLED).
 #pragma once
 
 #include <optional>
@@ -43,7 +45,7 @@ struct MeshRepair {
     std::vector<std::string> shell_paths;
 };
 
-std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& progress);
+std::optional<MeshRepair> repair_at_mesh_level(const Mesh& input, Progress& progress, Mesh* oriented = nullptr);
 
 //! `kept` and `more` (two clean solids, such as the shells kept and the
 //! volumetric repair of the rest) as one clean solid, their crossings

@@ -66,22 +66,30 @@ size_t count_non_manifold_vertices(const Mesh& mesh, const EdgeTable& edges) {
     return size_t(std::count(several_fans.begin(), several_fans.end(), true));
 }
 
-size_t count_boundary_loops(const Mesh& mesh, const EdgeTable& edges) {
-    DisjointSets loops(mesh.vertices.size());
+}  // namespace
+
+std::vector<std::vector<uint32_t>> boundary_loops(const Mesh& mesh, const EdgeTable& edges) {
+    DisjointSets sets(mesh.vertices.size());
     std::vector<bool> on_boundary(mesh.vertices.size(), false);
     for (size_t e = 0; e < edges.edge_count(); ++e) {
         if (edges.use_count(e) != 1) continue;
         const EdgeUse& use = edges.uses[edges.begin[e]];
-        loops.unite(use.lo, use.hi);
+        sets.unite(use.lo, use.hi);
         on_boundary[use.lo] = on_boundary[use.hi] = true;
     }
-    size_t count = 0;
-    for (uint32_t v = 0; v < mesh.vertices.size(); ++v)
-        if (on_boundary[v] && loops.find(v) == v) ++count;
-    return count;
+    std::vector<uint32_t> loop_of(mesh.vertices.size(), none);
+    std::vector<std::vector<uint32_t>> loops;
+    for (uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (!on_boundary[v]) continue;
+        const uint32_t root = sets.find(v);
+        if (loop_of[root] == none) {
+            loop_of[root] = uint32_t(loops.size());
+            loops.emplace_back();
+        }
+        loops[loop_of[root]].push_back(v);
+    }
+    return loops;
 }
-
-}  // namespace
 
 EdgeTable build_edge_table(const Mesh& mesh) {
     EdgeTable table;
@@ -139,7 +147,7 @@ TopologySummary summarize_topology(const Mesh& mesh) {
         if (uses != 2) s.component_closed[s.triangle_component[first.triangle]] = false;
         if (uses == 2 && first.forward == edges.uses[edges.begin[e] + 1].forward) ++s.inconsistent_edges;
     }
-    s.boundary_loops = count_boundary_loops(mesh, edges);
+    s.boundary_loops = boundary_loops(mesh, edges).size();
     s.non_manifold_vertices = count_non_manifold_vertices(mesh, edges);
     s.closed = !mesh.triangles.empty() && s.boundary_edges == 0 && s.non_manifold_edges == 0;
 

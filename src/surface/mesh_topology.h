@@ -40,6 +40,11 @@ EdgeTable build_edge_table(const Mesh& mesh);
 //! `component_count` receives the number of components.
 std::vector<uint32_t> triangle_components(const Mesh& mesh, size_t& component_count);
 
+//! The vertices of each boundary loop: boundary edges (used by one triangle)
+//! connected through shared vertices, so loops that touch at a vertex are
+//! one. Loops in order of their least vertex, each loop's vertices ascending.
+std::vector<std::vector<uint32_t>> boundary_loops(const Mesh& mesh, const EdgeTable& edges);
+
 //! The figures `fabvdb info` reports about topology (README "fabvdb info").
 struct TopologySummary {
     size_t referenced_vertices = 0;

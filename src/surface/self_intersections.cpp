@@ -1,18 +1,20 @@
-//! Self-intersections: bounding boxes of all triangles are intersected with
-//! CGAL's box_self_intersection_d (closed boxes, so touching counts); pairs that
-//! share a welded vertex are dropped; the rest are tested with CGAL's exact
-//! do_intersect in parallel batches, between the progress updates.
+//! Self-intersections: the triangles whose bounding boxes overlap are found
+//! by the broad phase the crossing test uses (triangle_box_pairs.h; closed
+//! boxes, so touching counts); pairs that share a welded vertex are dropped;
+//! the rest are tested with CGAL's exact do_intersect in parallel batches,
+//! between the progress updates.
 #include "surface/self_intersections.h"
 
 #include <algorithm>
 #include <variant>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "surface/weld_vertices.h"
+#include "volume/triangle_box_pairs.h"
 
 namespace fabvdb::surface {
 namespace {
@@ -20,8 +22,6 @@ namespace {
 using Kernel = CGAL::Epick;
 using Point = Kernel::Point_3;
 using Shape = std::variant<Kernel::Triangle_3, Kernel::Segment_3, Point>;
-// Boxes are identified by the address of their shape (thread-safe, unlike CGAL's id counter).
-using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, const Shape*>;
 
 //! The point set of the triangle's corners: a triangle, or the segment or point
 //! it collapses to (CGAL's triangle tests require non-degenerate triangles).
@@ -48,9 +48,7 @@ std::vector<std::pair<uint32_t, uint32_t>> self_intersecting_pairs(const Mesh& m
     const size_t count = mesh.triangles.size();
     std::vector<Triangle> welded(count);
     std::vector<Shape> shapes(count);
-    std::vector<Box> boxes;
-    boxes.reserve(count);
-    for (size_t t = 0; t < count; ++t) {
+    tbb::parallel_for(size_t(0), count, [&](size_t t) {
         Point p[3];
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = mesh.triangles[t][k];
@@ -58,19 +56,18 @@ std::vector<std::pair<uint32_t, uint32_t>> self_intersecting_pairs(const Mesh& m
             p[k] = Point(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]);
         }
         shapes[t] = corner_hull(p[0], p[1], p[2]);
-        // Box corners are the coordinates themselves (no rounding): the broad phase misses nothing.
-        boxes.emplace_back(p[0].bbox() + p[1].bbox() + p[2].bbox(), &shapes[t]);
-    }
-
-    std::vector<std::pair<uint32_t, uint32_t>> candidates;
-    size_t reported = 0;
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
-        if ((++reported & 0xffff) == 0) progress.check();
-        const auto index_x = uint32_t(x.handle() - shapes.data()), index_y = uint32_t(y.handle() - shapes.data());
-        const uint32_t i = std::min(index_x, index_y), j = std::max(index_x, index_y);
-        if (!share_position(welded[i], welded[j])) candidates.push_back({i, j});
     });
+    progress.check();
+
+    tbb::enumerable_thread_specific<std::vector<std::pair<uint32_t, uint32_t>>> found;
+    volume::for_each_overlapping_box_pair(mesh, [&](uint32_t a, uint32_t b) {
+        const uint32_t i = std::min(a, b), j = std::max(a, b);
+        if (!share_position(welded[i], welded[j])) found.local().push_back({i, j});
+    });
+    std::vector<std::pair<uint32_t, uint32_t>> candidates;
+    for (const auto& some : found) candidates.insert(candidates.end(), some.begin(), some.end());
     std::sort(candidates.begin(), candidates.end());
+    progress.check();
 
     progress.stage("self-intersections: exact tests");
     std::vector<char> intersecting(candidates.size(), 0);

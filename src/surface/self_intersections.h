@@ -3,8 +3,9 @@
 //! positions, so neighbours across an unwelded seam do not count) and whose
 //! closed point sets intersect or touch, coplanar overlaps included. Uses
 //! CGAL's exact predicates (Epick); a degenerate triangle is tested as the
-//! segment or point it is. Broad phase by CGAL box intersection, narrow phase
-//! in parallel (TBB). Reports progress; throws Error(CANCELLED).
+//! segment or point it is. Broad phase on the triangles' boxes
+//! (triangle_box_pairs.h), narrow phase in parallel (TBB). Reports progress;
+//! throws Error(CANCELLED).
 #pragma once
 
 #include <cstdint>

@@ -2,8 +2,9 @@
 //! taken: exactly coincident points are merged, degenerate and duplicate
 //! triangles removed (what CGAL's `repair_polygon_soup` keeps of triangles,
 //! found by sorting), each connected piece oriented consistently (CGAL
-//! `orient_polygon_soup`, which splits non-manifold vertices and edges), then every piece whose signed volume (about its own
-//! centroid) is negative is flipped, so inverted shells count as solids —
+//! `orient_polygon_soup`, which splits non-manifold vertices and edges),
+//! then every piece whose signed volume (about its own centroid) is
+//! negative is flipped, so inverted shells count as solids —
 //! except the walls of cavities: a piece the input oriented inward that lies
 //! wholly inside the other pieces' solid stays inward, so hollow parts stay
 //! hollow.

@@ -336,7 +336,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
 
     StageClock clock(stats.timings);
     progress.stage("orient");
-    Mesh mesh = orient_soup(input, progress);
+    Mesh mesh = options.oriented ? input : orient_soup(input, progress);
     clock.lap("orient");
     if (mesh.triangles.empty())
         throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangle with a non-zero area");

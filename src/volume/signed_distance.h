@@ -34,6 +34,9 @@ struct SignedDistanceOptions {
     double thicken = 0.0;
     //! What the input is called in error messages (usually its file name).
     std::string input_name = "mesh";
+    //! true: the input is already orient_soup's output (the mesh-level
+    //! repair made it), so it is not oriented again.
+    bool oriented = false;
 };
 
 //! Figures about one conversion, for reports.

@@ -1,7 +1,8 @@
 // Small holes filled with faired patches: a sphere missing the triangles
 // around two of its vertices gets them back as smooth patches close to the
 // sphere, all its triangles kept, closed again; a hole larger than allowed,
-// or a mesh without holes, is left alone.
+// a mesh without holes, or one that is not an oriented 2-manifold (a flipped
+// triangle, a fin) is left alone.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,6 +48,18 @@ TEST(FillSmallHoles, LargeHolesAndClosedMeshesAreLeftAlone) {
     fabvdb::Progress progress;
     EXPECT_FALSE(fabvdb::surface::fill_small_holes(sphere_with_two_holes(), 1.0, progress));
     EXPECT_FALSE(fabvdb::surface::fill_small_holes(fabvdb::test::make_sphere({0, 0, 0}, 10.0, 2), 5.0, progress));
+}
+
+TEST(FillSmallHoles, NoPatchOnAMeshThatIsNotAnOrientedManifold) {
+    fabvdb::Progress progress;
+    Mesh flipped = sphere_with_two_holes();
+    std::swap(flipped.triangles[40][1], flipped.triangles[40][2]);
+    EXPECT_FALSE(fabvdb::surface::fill_small_holes(flipped, 5.0, progress));
+    Mesh fin = sphere_with_two_holes();
+    const fabvdb::Triangle t = fin.triangles[40];
+    fin.vertices.push_back({0, 0, 20});
+    fin.triangles.push_back({t[0], t[1], uint32_t(fin.vertices.size() - 1)});
+    EXPECT_FALSE(fabvdb::surface::fill_small_holes(fin, 5.0, progress));
 }
 
 }  // namespace

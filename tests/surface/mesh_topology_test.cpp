@@ -1,10 +1,12 @@
 // Edge table, components and the topology summary against counts known by
 // hand: a box (8 vertices, 18 edges, genus 0), a torus grid (genus 1), boxes
-// with holes (boundary edges and loops), a fin (a non-manifold edge), two
+// with holes (boundary edges, loops and their vertices), a fin (a non-manifold edge), two
 // boxes pinched at one vertex, a flipped triangle (inconsistent edges), the
 // 6-vertex projective plane (closed, odd Euler characteristic: no genus),
 // unused vertices, repeated indices and the empty mesh.
 #include "surface/mesh_topology.h"
+
+#include <algorithm>
 
 #include <gtest/gtest.h>
 
@@ -142,6 +144,27 @@ TEST(MeshTopology, HolesAreBoundaryLoops) {
     s = summarize_topology(merged(one, make_box({3, 0, 0}, {4, 1, 1})));
     EXPECT_EQ(s.component_closed, (std::vector<bool>{false, true}));
     EXPECT_FALSE(s.closed);
+}
+
+TEST(MeshTopology, BoundaryLoopsListTheirVertices) {
+    const Mesh box = make_box({0, 0, 0}, {1, 1, 1});
+    const auto sorted = [](Triangle t) {
+        std::sort(t.begin(), t.end());
+        return std::vector<uint32_t>(t.begin(), t.end());
+    };
+    // One triangle removed: its three corners, ascending.
+    Mesh one = box;
+    one.triangles.erase(one.triangles.begin());
+    EXPECT_EQ(boundary_loops(one, build_edge_table(one)), std::vector<std::vector<uint32_t>>{sorted(box.triangles[0])});
+    // Two triangles removed that share no vertex: two loops, by least vertex.
+    Mesh two = box;
+    two.triangles.erase(two.triangles.begin() + 2);
+    two.triangles.erase(two.triangles.begin());
+    auto expected = std::vector<std::vector<uint32_t>>{sorted(box.triangles[0]), sorted(box.triangles[2])};
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(boundary_loops(two, build_edge_table(two)), expected);
+    // A closed box has none.
+    EXPECT_TRUE(boundary_loops(box, build_edge_table(box)).empty());
 }
 
 TEST(MeshTopology, FinIsANonManifoldEdge) {
