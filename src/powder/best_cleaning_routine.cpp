@@ -10,7 +10,7 @@
 namespace fabvdb::powder {
 
 Routine best_cleaning_routine(const TurnSamples& samples, const HoleSetDrain& drained, int length,
-                              const std::vector<Routine>& random) {
+                              const std::vector<Routine>& random, const Progress& progress) {
     const std::vector<Vec3>& gravity = samples.later_gravity;
     std::vector<CavityPowder> later;
     for (uint32_t c = 0; c < samples.cavity_count; ++c) later.push_back(cavity_powder(samples, drained, c));
@@ -50,10 +50,12 @@ Routine best_cleaning_routine(const TurnSamples& samples, const HoleSetDrain& dr
     for (int t = 0; t < length; ++t) {
         std::vector<double> left(gravity.size(), 0.0);
         tbb::parallel_for(size_t(0), gravity.size(), [&](size_t k) {
+            if (progress.cancelled()) return;
             Fill next = fill;
             turn(next, uint32_t(k));
             left[k] = left_of(next);
         });
+        progress.check();
         routine.push_back(pick(left, gravity_before(routine, routine.size())));
         turn(fill, routine.back());
     }
@@ -68,6 +70,7 @@ Routine best_cleaning_routine(const TurnSamples& samples, const HoleSetDrain& dr
     double best = residual_of(routine);
     for (const Routine& candidate : random) {
         if (int(candidate.size()) != length) continue;
+        progress.check();
         const double residual = residual_of(candidate);
         if (residual < best - tie) {
             best = residual;
@@ -80,11 +83,13 @@ Routine best_cleaning_routine(const TurnSamples& samples, const HoleSetDrain& dr
         for (size_t t = 0; t < routine.size(); ++t) {
             std::vector<double> left(gravity.size(), 0.0);
             tbb::parallel_for(size_t(0), gravity.size(), [&](size_t k) {
+                if (progress.cancelled()) return;
                 Fill end = before;
                 turn(end, uint32_t(k));
                 for (size_t u = t + 1; u < routine.size(); ++u) turn(end, routine[u]);
                 left[k] = left_of(end);
             });
+            progress.check();
             const uint32_t k = pick(left, gravity_before(routine, t));
             if (left[k] < best - tie) {
                 routine[t] = k;

@@ -6,11 +6,13 @@
 //! (two passes). Among turns within a millionth of the cavity volume of the
 //! least, the one with the smallest tilt from the previous gravity (the
 //! first turn's: as printed). Costs about turns × length² turns of the
-//! prediction, the candidate turns in parallel.
+//! prediction, the candidate turns in parallel; polls `progress` between
+//! them and throws Error(CANCELLED).
 #pragma once
 
 #include <vector>
 
+#include "core/progress.h"
 #include "powder/drain_prediction.h"
 #include "powder/hole_set_drain.h"
 #include "powder/turn_samples.h"
@@ -18,6 +20,6 @@
 namespace fabvdb::powder {
 
 Routine best_cleaning_routine(const TurnSamples& samples, const HoleSetDrain& drained, int length,
-                              const std::vector<Routine>& random);
+                              const std::vector<Routine>& random, const Progress& progress);
 
 }  // namespace fabvdb::powder

@@ -81,8 +81,9 @@ std::vector<double> DrainabilityModel::random_routine_residuals(const Drain& dra
     return per_routine;
 }
 
-DrainabilityModel::Routine DrainabilityModel::best_routine(const Drain& drained, int length) const {
-    return best_cleaning_routine(samples_, drained, length, routines_);
+DrainabilityModel::Routine DrainabilityModel::best_routine(const Drain& drained, int length,
+                                                           const Progress& progress) const {
+    return best_cleaning_routine(samples_, drained, length, routines_, progress);
 }
 
 DrainEvaluation DrainabilityModel::evaluate(const Drain& drained) const { return evaluate(drained, routines_); }

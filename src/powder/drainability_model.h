@@ -87,8 +87,8 @@ public:
     //! The prediction's residual (mm³) for each of its random routines.
     std::vector<double> random_routine_residuals(const Drain& drained) const;
     //! The cleaning routine of `length` later turns (best_cleaning_routine.h),
-    //! starting from the prediction's random routines.
-    Routine best_routine(const Drain& drained, int length) const;
+    //! starting from the prediction's random routines; polls `progress`.
+    Routine best_routine(const Drain& drained, int length, const Progress& progress) const;
     //! The later turns of the prediction's routines (round(ρ / (1 − ρ))).
     int later_turns() const { return later_turns_; }
     //! Gravity of turn `k` of the orientation set.

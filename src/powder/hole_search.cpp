@@ -291,7 +291,7 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     const double target = options.target_residual_fraction * total;
     auto routine_kept = [&](const std::vector<size_t>& holes) {
         const DrainabilityModel::Drain drained = search.predicted_drain(holes);
-        return model.routine_residual(drained, model.best_routine(drained, model.later_turns()));
+        return model.routine_residual(drained, model.best_routine(drained, model.later_turns(), progress));
     };
     while (automatic && int(chosen.size()) < ceiling && routine_kept(chosen) >= target) {
         progress.check();
@@ -328,13 +328,13 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
     });
     const DrainabilityModel::Drain drained = search.predicted_drain(chosen);
     result.evaluation = model.evaluate(drained);
-    result.routine = model.best_routine(drained, model.later_turns());
+    result.routine = model.best_routine(drained, model.later_turns(), progress);
     result.routine_evaluation = model.evaluate(drained, {result.routine});
     result.random_residuals = model.random_routine_residuals(drained);
     const DrainabilityModel::Drain lowest_drained = search.predicted_drain(lowest);
     result.baseline_evaluation = model.evaluate(lowest_drained);
     result.baseline_routine_residual =
-        model.routine_residual(lowest_drained, model.best_routine(lowest_drained, model.later_turns()));
+        model.routine_residual(lowest_drained, model.best_routine(lowest_drained, model.later_turns(), progress));
     for (size_t c : chosen) result.holes.push_back(candidates[c]);
     for (size_t c : lowest) result.baseline.push_back(candidates[c]);
     progress.update(1.0);

@@ -16,7 +16,10 @@ namespace {
 //! Later-turn samples aimed at by the automatic stride.
 constexpr double kLaterSamples = 2500.0;
 
-std::vector<std::array<uint32_t, 26>> sample_links(const SampleGrid& grid) {
+//! Per sample, the sample of each of the 26 cells around it reached by face
+//! steps within its own cavity (a coarse grid can put samples of two
+//! cavities side by side across a thin wall; powder does not pass).
+std::vector<std::array<uint32_t, 26>> sample_links(const SampleGrid& grid, const std::vector<uint32_t>& cavity) {
     std::vector<std::array<uint32_t, 26>> links(grid.size());
     tbb::parallel_for(size_t(0), grid.size(), [&](size_t a) {
         for (size_t d = 0; d < 26; ++d) {
@@ -29,7 +32,10 @@ std::vector<std::array<uint32_t, 26>> sample_links(const SampleGrid& grid) {
             uint32_t found = kNoSample;
             do {
                 uint32_t at = uint32_t(a);
-                for (size_t k = 0; k < count && at != kNoSample; ++k) at = grid.neighbours[at][faces[k]];
+                for (size_t k = 0; k < count && at != kNoSample; ++k) {
+                    at = grid.neighbours[at][faces[k]];
+                    if (at != kNoSample && cavity[at] != cavity[a]) at = kNoSample;
+                }
                 found = at;
             } while (found == kNoSample && std::next_permutation(faces.begin(), faces.begin() + long(count)));
             links[a][d] = found;
@@ -147,7 +153,7 @@ TurnSamples turn_samples(const CavityPatches& patches, const std::vector<Orienta
     };
     cavities(result.first_grid, result.first_cavity, result.first_count);
     cavities(result.later_grid, result.later_cavity, result.later_count);
-    result.later_links = sample_links(result.later_grid);
+    result.later_links = sample_links(result.later_grid, result.later_cavity);
     result.first_chains =
         chains(result.first_grid,
                sublevel_forest(result.first_grid.neighbours, heights(result.first_grid, powder, first.gravity)),

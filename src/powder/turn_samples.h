@@ -68,8 +68,9 @@ struct TurnSamples {
     std::vector<Vec3> later_gravity;  //!< per turn of the orientation set
     SampleGrid first_grid, later_grid;
     //! Per later-grid sample: the sample of each of the 26 cells around it
-    //! (kLinkOffsets), kNoSample if none or if no path of face steps leads
-    //! there (a diagonal step never cuts through a wall's edge or corner).
+    //! (kLinkOffsets), kNoSample if none or if no path of face steps within
+    //! the sample's cavity leads there (a diagonal step never cuts through a
+    //! wall's edge or corner, no step crosses into another cavity).
     std::vector<std::array<uint32_t, 26>> later_links;
     SampleChains first_chains;
     //! Per later turn.

@@ -9,11 +9,14 @@
 //! - Turns −z (nothing), +x (the upper half) and +y (the lower half): the
 //!   greedy routine of two turns takes +x (tied with +y, the first of equal
 //!   tilt) then +y; worse random routines do not replace it.
+//! - Cancelled: Error(CANCELLED), no routine.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <memory>
 #include <vector>
 
+#include "core/error.h"
 #include "powder/best_cleaning_routine.h"
 #include "powder_block.h"
 
@@ -51,18 +54,31 @@ struct Block : SampleBlock {
 TEST(BestCleaningRoutine, TurnsToTheHoleAndStays) {
     const Block block({{0, 0, -1}, {1, 0, 0}});
     const HoleSetDrain drained = block.drain([](size_t k, const Vec3&) { return k == 1; });
-    EXPECT_EQ(best_cleaning_routine(block.samples, drained, 2, {{0, 0}, {0, 1}}), (Routine{1, 1}));
+    EXPECT_EQ(best_cleaning_routine(block.samples, drained, 2, {{0, 0}, {0, 1}}, fabvdb::Progress()), (Routine{1, 1}));
 }
 
 TEST(BestCleaningRoutine, NothingDrainsSoNothingTurns) {
     const Block block({{1, 0, 0}, {0, 0, -1}, {0, 0, 1}});
     const HoleSetDrain drained = block.drain([](size_t, const Vec3&) { return false; });
-    EXPECT_EQ(best_cleaning_routine(block.samples, drained, 3, {}), (Routine{1, 1, 1}));
+    EXPECT_EQ(best_cleaning_routine(block.samples, drained, 3, {}, fabvdb::Progress()), (Routine{1, 1, 1}));
 }
 
 TEST(BestCleaningRoutine, TakesTheTurnsThatDrainTheMost) {
     const Block block({{0, 0, -1}, {1, 0, 0}, {0, 1, 0}});
     const HoleSetDrain drained =
         block.drain([](size_t k, const Vec3& p) { return (k == 1 && p[2] >= 2) || (k == 2 && p[2] < 2); });
-    EXPECT_EQ(best_cleaning_routine(block.samples, drained, 2, {{0, 0}, {0, 2}}), (Routine{1, 2}));
+    EXPECT_EQ(best_cleaning_routine(block.samples, drained, 2, {{0, 0}, {0, 2}}, fabvdb::Progress()), (Routine{1, 2}));
+}
+
+TEST(BestCleaningRoutine, StopsWhenCancelled) {
+    const Block block({{0, 0, -1}, {1, 0, 0}});
+    const HoleSetDrain drained = block.drain([](size_t k, const Vec3&) { return k == 1; });
+    std::atomic<bool> cancel{true};
+    const fabvdb::Progress progress(nullptr, nullptr, &cancel);
+    try {
+        best_cleaning_routine(block.samples, drained, 2, {}, progress);
+        ADD_FAILURE() << "no error";
+    } catch (const fabvdb::Error& e) {
+        EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
+    }
 }

@@ -9,7 +9,8 @@
 //! - Floors: halfway below the bottom layer, and beside a side wall's
 //!   lower edge; none inside.
 //! - Links: the 26 around an inner sample all exist; a diagonal step whose
-//!   face steps are both missing is no link.
+//!   face steps are both missing is no link; nor is a step into another
+//!   cavity (two layers on either side of a wall thinner than the grid).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,4 +98,26 @@ TEST(TurnSamples, DiagonalLinksNeverCutAWallsEdge) {
     const TurnSamples flat = turn_samples(patches, turns, turns[0], powder, kBlockRepose);
     const auto& links = flat.later_links[0];  // the sample at (0, 0, 0)
     EXPECT_EQ(std::count_if(links.begin(), links.end(), [](uint32_t c) { return c != kNoSample; }), 0);
+}
+
+TEST(TurnSamples, NoLinkCrossesIntoAnotherCavity) {
+    // A 3 × 3 × 2 block: the bottom layer rests on the floor (cavity 0), the
+    // top layer on the ceiling, here made a second cavity.
+    auto patches = room_patches();
+    patches.cavity[kCeiling] = 1;
+    patches.cavity_count = 2;
+    auto powder = powder_block(3, 3, 2, 1.0);
+    for (size_t i = 9; i < 18; ++i) powder.rest_patch[i] = kCeiling;
+    const auto turns = gravity_flows({{0, 0, -1}});
+    const TurnSamples two = turn_samples(patches, turns, turns[0], powder, kBlockRepose);
+    for (uint32_t a = 0; a < 18; ++a) {
+        size_t linked = 0;
+        for (uint32_t c : two.later_links[a]) {
+            if (c == kNoSample) continue;
+            ++linked;
+            EXPECT_EQ(two.later_cavity[c], two.later_cavity[a]) << "sample " << a;
+        }
+        // Within its own 3 × 3 layer: 8 around the centre, 3 or 5 at the edge.
+        EXPECT_EQ(linked, a % 9 == 4 ? 8u : (a % 2 == 0 ? 3u : 5u)) << "sample " << a;
+    }
 }
