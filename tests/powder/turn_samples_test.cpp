@@ -118,6 +118,7 @@ TEST(TurnSamples, NoLinkCrossesIntoAnotherCavity) {
             EXPECT_EQ(two.later_cavity[c], two.later_cavity[a]) << "sample " << a;
         }
         // Within its own 3 × 3 layer: 8 around the centre, 3 or 5 at the edge.
-        EXPECT_EQ(linked, a % 9 == 4 ? 8u : (a % 2 == 0 ? 3u : 5u)) << "sample " << a;
+        const uint32_t in_layer = a % 9;
+        EXPECT_EQ(linked, in_layer == 4 ? 8u : (in_layer % 2 == 0 ? 3u : 5u)) << "sample " << a;
     }
 }
