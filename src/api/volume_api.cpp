@@ -13,6 +13,7 @@
 #include "api/options.h"
 #include "api/volume_handle.h"
 #include "core/atomic_output.h"
+#include "core/float_coordinates.h"
 #include "core/stage_clock.h"
 #include "surface/float_rounding.h"
 #include "surface/inspect.h"
@@ -64,14 +65,6 @@ nlohmann::json repair_report(const fabvdb::volume::RepairResult& result, double 
     report["timings"] = result.distance.timings;
     report["timings"]["total"] = total_seconds;
     return report;
-}
-
-//! Whether every coordinate is a float (what an STL or 3MF file stores).
-bool on_float_grid(const fabvdb::Mesh& mesh) {
-    for (const fabvdb::Vec3& p : mesh.vertices)
-        for (int k = 0; k < 3; ++k)
-            if (double(float(p[k])) != p[k]) return false;
-    return true;
 }
 
 }  // namespace
@@ -170,7 +163,7 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
         // New vertices (crossings resolved, holes filled, shells united) lie
         // off the float grid an STL or 3MF stores; where rounding them makes
         // triangles cross that no nudge clears, voxels repair the input.
-        if (fixed && !on_float_grid(fixed->mesh)) {
+        if (fixed && !fabvdb::on_float_grid(fixed->mesh)) {
             try {
                 fixed->mesh = fabvdb::surface::round_to_float(fixed->mesh, mesh->name);
             } catch (const fabvdb::Error& e) {

@@ -14,6 +14,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "core/error.h"
+#include "core/float_coordinates.h"
 #include "surface/degenerate_triangles.h"
 #include "volume/closed_manifold.h"
 #include "volume/crossing_pairs.h"
@@ -21,16 +22,6 @@
 namespace fabvdb::surface {
 
 namespace {
-
-// Through a volatile float: GCC 12.2 at -O2 and above vectorises
-// {double(float(x)), double(float(y)), ...} into a pair conversion that it
-// then drops as a no-op, leaving x and y unrounded.
-double nearest_float(double x) {
-    volatile float rounded = float(x);
-    return rounded;
-}
-
-Vec3 nearest_float(const Vec3& p) { return {nearest_float(p[0]), nearest_float(p[1]), nearest_float(p[2])}; }
 
 using Point = CGAL::Epick::Point_3;
 

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "core/float_coordinates.h"
 #include "surface/float_rounding.h"
 #include "surface/inspect.h"
 #include "surface/weld_vertices.h"
@@ -28,14 +29,7 @@ void add_count(std::string& text, uint64_t count, const char* what) {
 Mesh mesh_as_written(const Mesh& mesh, io::MeshFormat format) {
     if (!stores_floats(format)) return mesh;
     Mesh written = mesh;
-    // Through a volatile float: GCC 12.2 at -O2 and above vectorises the
-    // round trip into a pair conversion that it drops as a no-op (as
-    // float_rounding.cpp does).
-    for (Vec3& p : written.vertices)
-        for (double& c : p) {
-            volatile float rounded = static_cast<float>(c);
-            c = rounded;
-        }
+    for (Vec3& p : written.vertices) p = nearest_float(p);
     if (format == io::MeshFormat::stl) written = weld_coincident_vertices(written);
     return written;
 }

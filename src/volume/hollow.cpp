@@ -14,6 +14,7 @@
 
 #include "core/centred_frame.h"
 #include "core/error.h"
+#include "core/float_coordinates.h"
 #include "core/stage_clock.h"
 #include "volume/cavity_regions.h"
 #include "volume/clean_solid.h"
@@ -106,12 +107,11 @@ void check_budget(const Mesh& outer, const HollowOptions& o, double voxel) {
     throw Error(FABVDB_ERR_OUT_OF_BUDGET, message.str());
 }
 
-// Whether `mesh`, a clean solid in doubles, stays one with every coordinate
-// rounded to the nearest float, as an STL file holds it. The crossings of
-// overlapping shells, cut in doubles, may lie closer than a float step.
-bool clean_in_floats(Mesh mesh, Progress& progress) {
-    for (Vec3& p : mesh.vertices)
-        for (double& c : p) c = double(float(c));
+// Whether `mesh`, a clean solid in doubles given in `frame`, stays one as an
+// STL file stores it (float_coordinates.h). The crossings of overlapping
+// shells, cut in doubles, may lie closer than a float step.
+bool clean_in_floats(Mesh mesh, const CentredFrame& frame, Progress& progress) {
+    for (Vec3& p : mesh.vertices) p = stored_position(p, frame);
     return check_solid(mesh, progress).clean;
 }
 
@@ -120,20 +120,8 @@ Mesh flipped(Mesh mesh) {
     return mesh;
 }
 
-}  // namespace
-
-double automatic_hollow_voxel(double wall) { return wall / 4.0; }
-
-HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& progress) {
-    validate(options);
-    validate_mesh(input, options.input_name);
-    if (input.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangles");
-    const CentredFrame frame = centred_frame(input);
-    if (!frame.identity()) {
-        HollowResult result = hollow(to_local(input, frame), options, progress);
-        to_world(result.mesh, frame);
-        return result;
-    }
+HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, const CentredFrame& frame,
+                             Progress& progress) {
     openvdb::initialize();
     HollowResult result;
     StageClock clock(result.timings);
@@ -154,7 +142,7 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     std::optional<Mesh> resolved;
     if (!check.crossings.empty()) {
         resolved = resolve_crossings(input, check.crossings, progress);
-        if (resolved && !clean_in_floats(*resolved, progress)) resolved.reset();
+        if (resolved && !clean_in_floats(*resolved, frame, progress)) resolved.reset();
         clock.lap("resolve crossings");
     }
     if (check.clean) {
@@ -168,7 +156,7 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
         repair_options.distance.voxel_size = voxel;
         repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
         repair_options.distance.input_name = options.input_name;
-        outer = repair(input, repair_options, progress).mesh;
+        outer = repair_in_frame(input, repair_options, frame, progress).mesh;
         result.outer_surface = "repaired";
         clock.lap("repair");
     }
@@ -219,20 +207,20 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
     // Keep the voids large enough, fill the others. Solid left floating in a
     // void (where the opening closes around a pocket) would print loose: it
     // becomes void, and so does any void inside it.
-    Mesh kept;
+    const std::vector<CavityRegion> regions = split_cavity_regions(cavity_surface);
+    std::vector<size_t> open_regions;
     size_t islands = 0;
     double island_volume = 0.0;
-    for (const CavityRegion& region : split_cavity_regions(cavity_surface)) {
+    for (size_t r = 0; r < regions.size(); ++r) {
+        const CavityRegion& region = regions[r];
         if (region.in_island) continue;
         islands += split_shells(region.islands).size();
         island_volume += region.island_volume;
         const double volume = region.volume + region.island_volume;
-        if (volume >= options.min_cavity_volume && volume > 0.0) {
-            result.cavity_volumes.push_back(volume);
-            append(kept, region.surface);
-        } else {
+        if (volume >= options.min_cavity_volume && volume > 0.0)
+            open_regions.push_back(r);
+        else
             result.filled_cavity_volumes.push_back(volume);
-        }
     }
     if (islands > 0) {
         std::ostringstream message;
@@ -242,13 +230,63 @@ HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& p
         result.warnings.push_back(message.str());
     }
     clock.lap("cavity regions");
-    require_disjoint_surfaces(outer, kept, options.input_name, progress);
+
+    // A void whose surface touches the outer one (where a repaired or
+    // resolved outer surface folds closer than the wall) is filled: the
+    // part keeps its wall there, and the hollowed mesh its separation.
+    Mesh kept;
+    std::vector<size_t> first_triangle;
+    for (size_t r : open_regions) {
+        first_triangle.push_back(kept.triangles.size());
+        append(kept, regions[r].surface);
+    }
+    first_triangle.push_back(kept.triangles.size());
+    const std::vector<char> touching = cavity_triangles_touching(outer, kept, progress);
+    Mesh clear;
+    size_t touching_count = 0;
+    double touching_volume = 0.0;
+    for (size_t k = 0; k < open_regions.size(); ++k) {
+        const CavityRegion& region = regions[open_regions[k]];
+        const double volume = region.volume + region.island_volume;
+        if (std::any_of(touching.begin() + ptrdiff_t(first_triangle[k]),
+                        touching.begin() + ptrdiff_t(first_triangle[k + 1]), [](char t) { return t != 0; })) {
+            ++touching_count;
+            touching_volume += volume;
+            result.filled_cavity_volumes.push_back(volume);
+        } else {
+            result.cavity_volumes.push_back(volume);
+            append(clear, region.surface);
+        }
+    }
+    if (touching_count > 0) {
+        std::ostringstream message;
+        message.precision(3);
+        message << options.input_name << ": " << touching_count << (touching_count == 1 ? " void" : " voids") << " ("
+                << touching_volume << " mm³) that would touch the outer surface "
+                << (touching_count == 1 ? "is" : "are") << " left solid";
+        result.warnings.push_back(message.str());
+    }
+    kept = std::move(clear);
     clock.lap("separation check");
 
     result.mesh = std::move(outer);
     append(result.mesh, flipped(std::move(kept)));
     result.volume_shell = result.volume_solid;
     for (double v : result.cavity_volumes) result.volume_shell -= v;
+    return result;
+}
+
+}  // namespace
+
+double automatic_hollow_voxel(double wall) { return wall / 4.0; }
+
+HollowResult hollow(const Mesh& input, const HollowOptions& options, Progress& progress) {
+    validate(options);
+    validate_mesh(input, options.input_name);
+    if (input.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": no triangles");
+    const CentredFrame frame = centred_frame(input);
+    HollowResult result = hollow_in_frame(to_local(input, frame), options, frame, progress);
+    to_world(result.mesh, frame);
     return result;
 }
 

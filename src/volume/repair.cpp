@@ -21,12 +21,13 @@ namespace {
 // Extracts the surface and snaps it onto the input where it is clean. Walls
 // thinner than a voxel extract as two sheets through the same cells, which
 // may touch: such a solid is grown by half a voxel (at most twice) until its
-// surface is a closed manifold without crossings. With snapping, the
+// surface is a closed manifold without crossings; still open then, the
+// input has no consistent inside (Error(BAD_INPUT)). With snapping, the
 // crossing test of the snapped surface covers the extracted one as well.
 // Its stages lap on `clock`. Returns the shells the last extraction dropped
 // as noise.
-uint64_t extract_clean_surface(const OrientedInput& input, const RepairOptions& options, RepairResult& result,
-                               StageClock& clock, Progress& progress) {
+uint64_t extract_clean_surface(const OrientedInput& input, const RepairOptions& options, const CentredFrame& frame,
+                               RepairResult& result, StageClock& clock, Progress& progress) {
     uint64_t specks = 0;
     for (int attempt = 0;; ++attempt) {
         const bool last = attempt == 2;
@@ -39,10 +40,17 @@ uint64_t extract_clean_surface(const OrientedInput& input, const RepairOptions& 
         const bool manifold = is_closed_manifold(result.mesh);
         clock.lap("extract surface");
         if (!manifold && !last) continue;
+        if (!manifold)
+            throw Error(FABVDB_ERR_BAD_INPUT,
+                        options.distance.input_name +
+                            ": has no consistent inside: the surface of its signed distance stays open with its "
+                            "walls grown by a voxel (shells oriented every which way, or crossing everywhere); "
+                            "mend it in a mesh editor, or give --thicken to take it as a sheet");
         bool crossing = false;
         if (options.snap) {
             const SnapResult snap =
-                snap_to_mesh(result.mesh, input.mesh, *input.closest_triangle, result.grid->voxelSize()[0], progress);
+                snap_to_mesh(result.mesh, input.mesh, *input.closest_triangle, result.grid->voxelSize()[0], frame,
+                             progress);
             clock.lap("snap");
             result.snapped_vertices = snap.moved_vertices;
             crossing = snap.self_intersecting;
@@ -66,12 +74,15 @@ double voxel_size_for_resolution(const Mesh& mesh, int resolution, const std::st
 
 RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& progress) {
     const CentredFrame frame = centred_frame(mesh);
-    if (!frame.identity()) {
-        RepairResult result = repair(to_local(mesh, frame), options, progress);
-        to_world(result.mesh, frame);
+    RepairResult result = repair_in_frame(to_local(mesh, frame), options, frame, progress);
+    to_world(result.mesh, frame);
+    if (!frame.identity())
         result.grid->transform().postTranslate(openvdb::Vec3d(frame.offset[0], frame.offset[1], frame.offset[2]));
-        return result;
-    }
+    return result;
+}
+
+RepairResult repair_in_frame(const Mesh& mesh, const RepairOptions& options, const CentredFrame& frame,
+                             Progress& progress) {
     RepairResult result;
     OrientedInput input;
     result.grid = signed_distance_from_mesh(mesh, options.distance, progress, &result.distance,
@@ -91,7 +102,7 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
     }
     result.distance.active_voxels = result.grid->activeVoxelCount();
     if (!options.extract) return result;
-    const uint64_t specks = extract_clean_surface(input, options, result, clock, progress);
+    const uint64_t specks = extract_clean_surface(input, options, frame, result, clock, progress);
     // Surface shells under a voxel's volume are specks of the extraction
     // (a voxel barely below zero), not pieces of the solid: always dropped.
     const double voxel = result.grid->voxelSize()[0];

@@ -7,13 +7,15 @@
 //! predicates; walls thinner than a voxel, whose two sides would touch, are
 //! grown by half a voxel until it is). A model far from the origin is
 //! processed near it (core/centred_frame.h). Throws what its stages
-//! throw, and Error(BAD_INPUT) when no shell survives; cancellable.
+//! throw, and Error(BAD_INPUT) when no shell survives or the surface stays
+//! open (the input has no consistent inside); cancellable.
 #pragma once
 
 #include <cstdint>
 
 #include <openvdb/openvdb.h>
 
+#include "core/centred_frame.h"
 #include "core/mesh.h"
 #include "core/progress.h"
 #include "volume/signed_distance.h"
@@ -43,6 +45,12 @@ struct RepairResult {
 };
 
 RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& progress);
+
+//! The same on a mesh already moved into `frame` (centred_frame.h), with the
+//! result in that frame; its snapped surface is placed where a float file
+//! stores it once moved back (snap_to_mesh.h).
+RepairResult repair_in_frame(const Mesh& mesh, const RepairOptions& options, const CentredFrame& frame,
+                             Progress& progress);
 
 //! The voxel size that puts `resolution` voxels along the longest side of the
 //! mesh's bounding box. Throws Error(INVALID_ARGUMENT) for resolution < 8 and

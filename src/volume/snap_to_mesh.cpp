@@ -9,6 +9,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "core/float_coordinates.h"
 #include "volume/crossing_pairs.h"
 #include "volume/feature_targets.h"
 #include "volume/nearest_triangle.h"
@@ -54,7 +55,7 @@ size_t revert(Mesh& surface, const Mesh& original, const Triangle& t, std::vecto
 // Moves every vertex of the surface whose closest input point is within
 // max_distance onto it when the input there faces the surface's way.
 void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
-                     double max_distance, std::vector<char>& moved, Progress& progress) {
+                     double max_distance, const CentredFrame& frame, std::vector<char>& moved, Progress& progress) {
     const NearestTriangle nearest(input, closest_triangle);
     const std::vector<Vec3> vertex_normal = area_weighted_vertex_normals(surface);
     // The closest input point of each vertex and the unit normal there; a
@@ -85,7 +86,7 @@ void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid&
     const double max_squared = max_distance * max_distance;
     for (size_t v = 0; v < surface.vertices.size(); ++v) {
         if (features.has_target[v]) {
-            surface.vertices[v] = features.target[v];
+            surface.vertices[v] = stored_position(features.target[v], frame);
             moved[v] = 1;
             continue;
         }
@@ -94,7 +95,7 @@ void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid&
         const Vector n_surface(vertex_normal[v][0], vertex_normal[v][1], vertex_normal[v][2]);
         const double length = std::sqrt(n_surface.squared_length());
         if (!(length > 0.0) || std::abs(n_input * n_surface) < min_facing * length) continue;
-        surface.vertices[v] = closest[v];
+        surface.vertices[v] = stored_position(closest[v], frame);
         moved[v] = 1;
     }
     progress.check();
@@ -103,12 +104,13 @@ void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid&
 }  // namespace
 
 SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
-                        double max_distance, Progress& progress) {
+                        double max_distance, const CentredFrame& frame, Progress& progress) {
     progress.stage("snap");
     SnapResult result;
+    for (Vec3& p : surface.vertices) p = stored_position(p, frame);
     const Mesh original = surface;
     std::vector<char> moved(surface.vertices.size(), 0);
-    move_onto_input(surface, input, closest_triangle, max_distance, moved, progress);
+    move_onto_input(surface, input, closest_triangle, max_distance, frame, moved, progress);
     progress.update(0.6);
 
     // Undo moves that flip or squash a triangle, then moves that make two

@@ -10,7 +10,6 @@
 #include "volume/surfaces_disjoint.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 #include <CGAL/AABB_traits.h>
@@ -107,23 +106,23 @@ private:
 };
 
 //! Counts the cavity triangles listed in `which` that touch a triangle of `tree`.
-size_t count_touching(const Tree& tree, const Mesh& cavity, const std::vector<uint32_t>& which, Progress& progress) {
-    std::atomic<size_t> touching{0};
+void mark_touching(const Tree& tree, const Mesh& cavity, const std::vector<uint32_t>& which, std::vector<char>& touching,
+                   Progress& progress) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 1024), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
             if (progress.cancelled()) return;
-            if (tree.do_intersect(triangle(cavity, cavity.triangles[which[i]]))) ++touching;
+            if (tree.do_intersect(triangle(cavity, cavity.triangles[which[i]]))) touching[which[i]] = 1;
         }
     });
     progress.check();
-    return touching;
 }
 
 }  // namespace
 
-void require_disjoint_surfaces(const Mesh& outer, const Mesh& cavity, const std::string& what, Progress& progress) {
+std::vector<char> cavity_triangles_touching(const Mesh& outer, const Mesh& cavity, Progress& progress) {
     progress.stage("check wall separation");
-    if (outer.triangles.empty() || cavity.triangles.empty()) return;
+    std::vector<char> touching(cavity.triangles.size(), 0);
+    if (outer.triangles.empty() || cavity.triangles.empty()) return touching;
     const CellGrid grid(outer, cavity);
 
     // The cells of the outer triangles that fit the grid; the others aside.
@@ -174,24 +173,21 @@ void require_disjoint_surfaces(const Mesh& outer, const Mesh& cavity, const std:
     for (uint32_t t = 0; t < cavity.triangles.size(); ++t) (near[t] ? near_cavity : far_cavity).push_back(t);
     progress.update(0.5);
 
-    size_t touching = 0;
     if (!near_cavity.empty()) {
         std::vector<Triangle3> outer_triangles;
         outer_triangles.reserve(outer.triangles.size());
         for (const fabvdb::Triangle& t : outer.triangles) outer_triangles.push_back(triangle(outer, t));
         Tree tree(outer_triangles.begin(), outer_triangles.end());
         tree.build();
-        touching += count_touching(tree, cavity, near_cavity, progress);
+        mark_touching(tree, cavity, near_cavity, touching, progress);
     }
     if (!large.empty() && !far_cavity.empty()) {
         Tree tree(large.begin(), large.end());
         tree.build();
-        touching += count_touching(tree, cavity, far_cavity, progress);
+        mark_touching(tree, cavity, far_cavity, touching, progress);
     }
     progress.update(1.0);
-    if (touching > 0)
-        throw Error(FABVDB_ERR_INTERNAL, what + ": " + std::to_string(touching) +
-                                             " cavity triangles touch the outer surface");
+    return touching;
 }
 
 }  // namespace fabvdb::volume

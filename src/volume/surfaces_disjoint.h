@@ -1,16 +1,18 @@
 //! Proof that a cavity surface stays clear of the outer surface: every cavity
 //! triangle is tested exactly (CGAL AABB tree, exact predicates) against the
-//! outer triangles; any contact throws Error(INTERNAL) naming the count, so a
-//! hollowed mesh never leaves with touching or crossing shells.
+//! outer triangles, and flagged where it touches or crosses one, so a
+//! hollowed mesh never leaves with touching or crossing shells. Parallel;
+//! throws Error(CANCELLED).
 #pragma once
 
-#include <string>
+#include <vector>
 
 #include "core/mesh.h"
 #include "core/progress.h"
 
 namespace fabvdb::volume {
 
-void require_disjoint_surfaces(const Mesh& outer, const Mesh& cavity, const std::string& what, Progress& progress);
+//! One flag per cavity triangle: 1 where it touches or crosses `outer`.
+std::vector<char> cavity_triangles_touching(const Mesh& outer, const Mesh& cavity, Progress& progress);
 
 }  // namespace fabvdb::volume

@@ -1,7 +1,9 @@
 // snap_to_mesh against an icosphere input (radius 5, no sharp edges) and a
 // surface that is the same sphere grown by 2 %: each grown vertex's closest
 // input point is the input vertex it came from, so snapping gives the input
-// back exactly. Checked too: a max_distance under the gap moves nothing, a
+// back, to a float step (every vertex goes where a float file stores it).
+// Checked too: in a frame kilometres off, every vertex lands on the float
+// grid of its world position; a max_distance under the gap moves nothing, a
 // piece far from the input stays, a radial fin the snapped sphere would cut
 // keeps its neighbourhood where it was (no crossing is left, none reported),
 // and cancellation.
@@ -13,6 +15,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/float_coordinates.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 #include "volume/crossing_pairs.h"
@@ -34,24 +37,45 @@ OrientedInput sphere_input() {
     return input;
 }
 
+// The mesh scaled about the origin, its coordinates rounded to floats (as
+// an extraction gives them), so vertices that do not move stay bit for bit.
 Mesh scaled(Mesh mesh, double factor) {
-    for (Vec3& p : mesh.vertices)
-        for (double& x : p) x *= factor;
+    for (Vec3& p : mesh.vertices) p = nearest_float(Vec3{p[0] * factor, p[1] * factor, p[2] * factor});
     return mesh;
 }
+
+const CentredFrame origin;
 
 TEST(SnapToMesh, GrownSphereSnapsBackOntoTheInputVertices) {
     const OrientedInput input = sphere_input();
     ASSERT_TRUE(input.closest_triangle);
     Mesh surface = scaled(input.mesh, grown);
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
     EXPECT_EQ(result.moved_vertices, surface.vertices.size());
     EXPECT_FALSE(result.self_intersecting);
     ASSERT_EQ(surface.vertices.size(), input.mesh.vertices.size());
     for (size_t v = 0; v < surface.vertices.size(); ++v)
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(surface.vertices[v][k], input.mesh.vertices[v][k], 1e-9) << "vertex " << v;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(surface.vertices[v][k], input.mesh.vertices[v][k], 3e-7) << "vertex " << v;
     EXPECT_EQ(surface.triangles, input.mesh.triangles);
+}
+
+TEST(SnapToMesh, InAFarFrameVerticesLandOnTheWorldFloatGrid) {
+    const OrientedInput input = sphere_input();
+    Mesh surface = scaled(input.mesh, grown);
+    CentredFrame far;
+    far.offset = {4000.0, -3000.0, 0.0};  // a float step of 2^-12 mm there
+    Progress progress;
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, far, progress);
+    EXPECT_EQ(result.moved_vertices, surface.vertices.size());
+    EXPECT_FALSE(result.self_intersecting);
+    EXPECT_TRUE(crossing_pairs(surface).empty());
+    for (size_t v = 0; v < surface.vertices.size(); ++v)
+        for (int k = 0; k < 3; ++k) {
+            const double world = surface.vertices[v][k] + far.offset[k];
+            EXPECT_EQ(nearest_float(world), world) << "vertex " << v;
+            EXPECT_NEAR(surface.vertices[v][k], input.mesh.vertices[v][k], std::ldexp(1.0, -12)) << "vertex " << v;
+        }
 }
 
 TEST(SnapToMesh, NothingWithinMaxDistanceMovesNothing) {
@@ -59,7 +83,7 @@ TEST(SnapToMesh, NothingWithinMaxDistanceMovesNothing) {
     const Mesh before = scaled(input.mesh, grown);  // 0.1 mm out
     Mesh surface = before;
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, 0.05, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, 0.05, origin, progress);
     EXPECT_EQ(result.moved_vertices, 0u);
     EXPECT_FALSE(result.self_intersecting);
     EXPECT_EQ(surface.vertices, before.vertices);
@@ -70,7 +94,7 @@ TEST(SnapToMesh, PieceFarFromTheInputStays) {
     const Mesh far = test::make_box({20, 20, 20}, {21, 21, 21});
     Mesh surface = test::merged(scaled(input.mesh, grown), far);
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
     EXPECT_EQ(result.moved_vertices, input.mesh.vertices.size());
     const size_t first = input.mesh.vertices.size();
     for (size_t v = 0; v < far.vertices.size(); ++v) EXPECT_EQ(surface.vertices[first + v], far.vertices[v]);
@@ -89,7 +113,7 @@ TEST(SnapToMesh, MovesThatWouldCutAFinAreUndone) {
         return Vec3{r * u[0] + s * t[0], r * u[1] + s * t[1], r * u[2] + s * t[2]};
     };
     Mesh fin;
-    fin.vertices = {along(4.9, 0.0), along(5.06, 0.0), along(5.0, 0.3)};
+    fin.vertices = {nearest_float(along(4.9, 0.0)), nearest_float(along(5.06, 0.0)), nearest_float(along(5.0, 0.3))};
     fin.triangles = {{0, 1, 2}};
     const Mesh before = test::merged(scaled(input.mesh, grown), fin);
     ASSERT_TRUE(crossing_pairs(before).empty());
@@ -98,7 +122,7 @@ TEST(SnapToMesh, MovesThatWouldCutAFinAreUndone) {
 
     Mesh surface = before;
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
     EXPECT_FALSE(result.self_intersecting);
     EXPECT_TRUE(crossing_pairs(surface).empty());
     EXPECT_TRUE(test::self_intersects(surface) == false);
@@ -112,7 +136,7 @@ TEST(SnapToMesh, MovesThatWouldCutAFinAreUndone) {
         const bool stayed = surface.vertices[v] == before.vertices[v];
         kept += stayed;
         if (!stayed)
-            for (int k = 0; k < 3; ++k) EXPECT_NEAR(surface.vertices[v][k], input.mesh.vertices[v][k], 1e-9);
+            for (int k = 0; k < 3; ++k) EXPECT_NEAR(surface.vertices[v][k], input.mesh.vertices[v][k], 3e-7);
     }
     EXPECT_EQ(kept, sphere_vertices - result.moved_vertices);
     // The one opposite the fin went onto the input.
@@ -132,7 +156,7 @@ TEST(SnapToMesh, CancelledThrows) {
     std::atomic<bool> cancel{true};
     Progress progress(nullptr, nullptr, &cancel);
     try {
-        snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, progress);
+        snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
         ADD_FAILURE() << "not cancelled";
     } catch (const Error& e) {
         EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
