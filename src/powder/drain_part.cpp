@@ -14,6 +14,7 @@
 #include "core/stage_clock.h"
 #include "surface/mesh_topology.h"
 #include "surface/signed_volume.h"
+#include "volume/clean_solid.h"
 #include "volume/drill_holes.h"
 #include "volume/extract_mesh.h"
 #include "volume/hollow.h"
@@ -41,11 +42,13 @@ Shells split_shells(const Mesh& mesh) {
     return shells;
 }
 
-//! Whether any value of the level set lies inside (below zero).
-bool holds_inside(const openvdb::FloatGrid& grid) {
-    for (auto value = grid.cbeginValueAll(); value; ++value)
-        if (*value < 0.0f) return true;
-    return false;
+//! Whether voids of the level set trap powder the model can see: some value
+//! lies inside (below zero) and the surface extraction keeps more than
+//! crumbs of it (it drops those as noise).
+bool traps_powder(const openvdb::FloatGrid& cavity, Progress& progress) {
+    bool inside = false;
+    for (auto value = cavity.cbeginValueAll(); value && !inside; ++value) inside = *value < 0.0f;
+    return inside && !volume::extract_mesh(cavity, 0.0, progress).triangles.empty();
 }
 
 openvdb::FloatGrid::Ptr level_set_of(const Mesh& closed, double voxel) {
@@ -93,7 +96,8 @@ openvdb::FloatGrid::Ptr fill_cavities_at(const openvdb::FloatGrid& cavity, const
 
 }  // namespace
 
-bool is_hollow_shell(const Mesh& mesh) {
+bool is_hollow_shell(const Mesh& mesh, Progress& progress) {
+    if (!volume::check_solid(mesh, progress).clean) return false;
     size_t count = 0;
     const std::vector<uint32_t> component = surface::triangle_components(mesh, count);
     const std::vector<double> volume = surface::component_signed_volumes(mesh, component, count);
@@ -115,7 +119,7 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
 
     // A closed mesh of the part's outer shells and its voids' shells (inward).
     Mesh shells_mesh;
-    result.input_was_hollow = is_hollow_shell(input);
+    result.input_was_hollow = is_hollow_shell(input, progress);
     if (result.input_was_hollow) {
         volume::SignedDistanceOptions distance;
         distance.voxel_size = voxel;
@@ -144,9 +148,7 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         return result;
     }
     openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
-    // Voids with no voxel inside, or only crumbs of one that the surface
-    // extraction drops as noise, trap no powder the model can see.
-    if (!holds_inside(*cavity) || volume::extract_mesh(*cavity, 0.0, progress).triangles.empty()) {
+    if (!traps_powder(*cavity, progress)) {
         result.warnings.push_back(options.input_name +
                                   ": the part's voids are thinner than a voxel, so no powder is trapped: no drain "
                                   "holes are needed and the part is returned undrilled");
@@ -166,6 +168,7 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         clock.add_laps(result.plan.timings);
         if (result.plan.cavities_without_site.empty()) break;
         cavity = fill_cavities_at(*cavity, result.plan.cavities_without_site, filled_count, filled_volume);
+        if (cavity && !traps_powder(*cavity, progress)) cavity.reset();
         if (!cavity) break;
     }
     if (filled_count > 0) {

@@ -44,8 +44,10 @@ struct DrainPartResult {
 
 DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, Progress& progress);
 
-//! Whether the mesh already is a hollow shell: it has a closed component
-//! facing inward (negative signed volume) — the boundary of a void.
-bool is_hollow_shell(const Mesh& mesh);
+//! Whether the mesh already is a hollow shell: a clean solid
+//! (volume/clean_solid.h) with a component facing inward (negative signed
+//! volume), the boundary of a void. A dirty mesh with inverted shells is
+//! not one: it is repaired and hollowed. Throws Error(CANCELLED).
+bool is_hollow_shell(const Mesh& mesh, Progress& progress);
 
 }  // namespace fabvdb::powder

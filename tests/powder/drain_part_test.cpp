@@ -1,7 +1,8 @@
 // fabvdb drain on meshes: a mesh that already is a hollow shell (outer
 // sphere and an inward-facing inner sphere) is drilled as it is, not
 // hollowed again: the cavity the model fills is the input's void, measured
-// against the void's own volume; a solid sphere is hollowed with the wall;
+// against the void's own volume; an inward shell of a dirty mesh is no
+// void; a solid sphere is hollowed with the wall;
 // with automatic holes the bunny's prediction ends under the target; over
 // the shared models the search, the routine and the heat map agree with
 // the one prediction; a void one voxel thin is drained, not refused; a
@@ -34,8 +35,8 @@ TEST(DrainPart, HollowInputKeepsItsOwnCavity) {
     const fabvdb::Mesh inner = fabvdb::test::make_sphere({0, 0, 0}, 10.0, 4);
     const fabvdb::Mesh shell =
         fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 15.0, 4), fabvdb::test::flipped(inner));
-    ASSERT_TRUE(fabvdb::powder::is_hollow_shell(shell));
     fabvdb::Progress progress;
+    ASSERT_TRUE(fabvdb::powder::is_hollow_shell(shell, progress));
     const auto result = fabvdb::powder::drain_part(shell, small_drain(2), progress);
     EXPECT_TRUE(result.input_was_hollow);
     // Hollowed again with the 3 mm wall, the void would reach radius 12.
@@ -46,13 +47,23 @@ TEST(DrainPart, HollowInputKeepsItsOwnCavity) {
         EXPECT_NEAR(std::hypot(hole.center[0], std::hypot(hole.center[1], hole.center[2])), 10.0, 0.6);
 }
 
+TEST(DrainPart, InvertedShellOfADirtyMeshIsNoVoid) {
+    // An inward shell outside the part (as a CAD export with a flipped
+    // body has): no void of a clean solid, so the part is hollowed.
+    const fabvdb::Mesh dirty =
+        fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 15.0, 4),
+                             fabvdb::test::flipped(fabvdb::test::make_sphere({40, 0, 0}, 5.0, 3)));
+    fabvdb::Progress progress;
+    EXPECT_FALSE(fabvdb::powder::is_hollow_shell(dirty, progress));
+}
+
 TEST(DrainPart, VoidOneVoxelThinIsDrained) {
     // A 30 x 30 x 10 box around a 20 x 20 x 0.5 flat void, at 0.5 mm voxels.
     const fabvdb::Mesh inner = fabvdb::test::make_box({-10, -10, 4.75}, {10, 10, 5.25});
     const fabvdb::Mesh shell = fabvdb::test::merged(fabvdb::test::make_box({-15, -15, 0}, {15, 15, 10}),
                                                     fabvdb::test::flipped(inner));
-    ASSERT_TRUE(fabvdb::powder::is_hollow_shell(shell));
     fabvdb::Progress progress;
+    ASSERT_TRUE(fabvdb::powder::is_hollow_shell(shell, progress));
     const auto result = fabvdb::powder::drain_part(shell, small_drain(1), progress);
     EXPECT_TRUE(result.has_cavity);
     EXPECT_EQ(result.plan.holes.size(), 1u);
@@ -90,8 +101,8 @@ TEST(DrainPart, VoidTooSmallForAHoleIsFilled) {
 
 TEST(DrainPart, SolidInputIsHollowedWithTheWall) {
     const fabvdb::Mesh solid = fabvdb::test::make_sphere({0, 0, 0}, 15.0, 4);
-    ASSERT_FALSE(fabvdb::powder::is_hollow_shell(solid));
     fabvdb::Progress progress;
+    ASSERT_FALSE(fabvdb::powder::is_hollow_shell(solid, progress));
     const auto result = fabvdb::powder::drain_part(solid, small_drain(2), progress);
     EXPECT_FALSE(result.input_was_hollow);
     const double cavity = 4.0 / 3.0 * M_PI * 12.0 * 12.0 * 12.0;
