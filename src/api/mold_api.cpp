@@ -130,6 +130,7 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         settings.memory_budget_bytes = ctx->budget_bytes();
         const bool common = (options.flags & FABVDB_MOLD_COMMON) != 0;
         settings.common_mold = common;
+        settings.input_name = mesh->name;
         const fabvdb::surface::MoldGeneration result =
             fabvdb::surface::generate_molds(mesh->mesh, model, settings, progress);
 

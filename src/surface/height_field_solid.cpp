@@ -5,6 +5,32 @@
 
 namespace fabvdb::surface {
 
+size_t join_corner_contacts(const HeightGrid& grid, std::vector<char>& cells) {
+    if (cells.size() != size_t(grid.nx) * size_t(grid.ny))
+        throw Error(FABVDB_ERR_INVALID_ARGUMENT, "join corner contacts: sizes do not match the grid");
+    auto cell = [&](int i, int j) { return size_t(j) * size_t(grid.nx) + size_t(i); };
+    size_t added = 0;
+    // A cell added can make a new corner contact only with cells beside it,
+    // so passes repeat until one adds nothing.
+    for (size_t added_in_pass = 1; added_in_pass > 0;) {
+        added_in_pass = 0;
+        for (int j = 0; j + 1 < grid.ny; ++j)
+            for (int i = 0; i + 1 < grid.nx; ++i) {
+                const bool a = cells[cell(i, j)], b = cells[cell(i + 1, j)], c = cells[cell(i, j + 1)],
+                           d = cells[cell(i + 1, j + 1)];
+                if (a && d && !b && !c) {
+                    cells[cell(i + 1, j)] = 1;
+                    ++added_in_pass;
+                } else if (b && c && !a && !d) {
+                    cells[cell(i, j)] = 1;
+                    ++added_in_pass;
+                }
+            }
+        added += added_in_pass;
+    }
+    return added;
+}
+
 Mesh height_field_solid(const HeightGrid& grid, const std::vector<char>& cells, const std::vector<double>& lower,
                         const std::vector<double>& upper) {
     const size_t vertex_count = size_t(grid.nx + 1) * size_t(grid.ny + 1);

@@ -22,4 +22,10 @@ namespace fabvdb::surface {
 Mesh height_field_solid(const HeightGrid& grid, const std::vector<char>& cells, const std::vector<double>& lower,
                         const std::vector<double>& upper);
 
+//! Marks cells so that no two marked cells touch only at a corner: where
+//! they do, the cell beside both of them with the lower index joins them.
+//! Cells are only added, so the result holds every cell it was given; it is
+//! what height_field_solid accepts. Returns how many cells were added.
+size_t join_corner_contacts(const HeightGrid& grid, std::vector<char>& cells);
+
 }  // namespace fabvdb::surface

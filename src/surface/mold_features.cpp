@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "surface/height_field_solid.h"
 
 namespace fabvdb::surface {
 
@@ -123,6 +124,9 @@ MoldFeatures place_mold_features(const std::vector<std::vector<Vec3>>& parting_l
         mark_segment(surface, p[0], p[1], p[0], exit_y, std::max(sizes.vent_half_width, 0.6 * surface.step),
                      features.channel_cells);
     }
+
+    // Channels that meet only at a cell's corner would pinch the channel solid.
+    join_corner_contacts(surface, features.channel_cells);
 
     // Keys near the four corners, in the margin between the runner and the border.
     const double inset = 0.35 * (block_hi[0] - part_hi[0]);

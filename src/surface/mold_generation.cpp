@@ -159,7 +159,10 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         CastPart cast;
         cast.id = model.parts[p].id;
         cast.direction = model.parts[p].direction;
-        cast.part = volume::double_height_field_mesh(*made[p], progress, input_grid.get());
+        cast.part = volume::double_height_field_mesh(
+            *made[p], progress, input_grid.get(),
+            options.input_name + ": part " + std::to_string(cast.id) +
+                " (swept along its direction, kept out of the other parts)");
         const OverhangDeformation& deformation = deformations[p];
         cast.deformed_volume_change = deformation.volume_after - deformation.volume_before;
         cast.given_volume = handed.given[p];

@@ -1,6 +1,7 @@
 // The solid between two height fields over grid cells: closed, outward, its
 // volume the integral of (upper − lower) over the cells, lines along Z cross
-// it twice; cells that touch only at a corner are refused.
+// it twice; cells that touch only at a corner are refused, and joined by
+// join_corner_contacts into cells it accepts.
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -54,6 +55,38 @@ TEST(HeightFieldSolid, RefusesCornerContactsAndInvertedHeights) {
     const std::vector<char> one{1, 0, 0, 0};
     EXPECT_THROW(fabvdb::surface::height_field_solid(grid, one, upper, lower), fabvdb::Error);
     EXPECT_THROW(fabvdb::surface::height_field_solid(grid, one, lower, std::vector<double>(3, 1.0)), fabvdb::Error);
+}
+
+TEST(HeightFieldSolid, JoinsCellsThatTouchOnlyAtACorner) {
+    HeightGrid grid;
+    grid.nx = 4;
+    grid.ny = 3;
+    // A staircase: each marked cell touches the next only at a corner.
+    std::vector<char> cells(12, 0);
+    cells[0] = cells[1 * 4 + 1] = cells[2 * 4 + 2] = 1;
+    cells[2 * 4 + 0] = 1;  // touches (1, 1) at a corner from the other side
+    const std::vector<char> given = cells;
+    const size_t added = fabvdb::surface::join_corner_contacts(grid, cells);
+    EXPECT_GT(added, 0u);
+    size_t kept = 0, count = 0;
+    for (size_t c = 0; c < cells.size(); ++c) {
+        kept += given[c] && cells[c];
+        count += cells[c] != given[c];
+    }
+    EXPECT_EQ(kept, 4u);
+    EXPECT_EQ(count, added);
+    for (int j = 0; j + 1 < grid.ny; ++j)
+        for (int i = 0; i + 1 < grid.nx; ++i) {
+            const bool a = cells[size_t(j * 4 + i)], b = cells[size_t(j * 4 + i + 1)];
+            const bool c = cells[size_t((j + 1) * 4 + i)], d = cells[size_t((j + 1) * 4 + i + 1)];
+            EXPECT_FALSE((a && d && !b && !c) || (b && c && !a && !d)) << "corner contact at " << i << ", " << j;
+        }
+    std::vector<double> lower(20, 0.0), upper(20, 1.0);
+    const fabvdb::Mesh solid = fabvdb::surface::height_field_solid(grid, cells, lower, upper);
+    EXPECT_TRUE(fabvdb::test::closed_two_manifold(solid));
+    EXPECT_NEAR(fabvdb::test::mesh_volume(solid), double(4 + added), 1e-12);
+    std::vector<char> none(12, 0);
+    EXPECT_EQ(fabvdb::surface::join_corner_contacts(grid, none), 0u);
 }
 
 }  // namespace
