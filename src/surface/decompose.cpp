@@ -26,8 +26,10 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
         !settings.shell.solid &&
         std::all_of(result.shell.thin_segment.begin(), result.shell.thin_segment.end(), [](int s) { return s >= 0; });
     if (all_thin) {
+        // Thin everywhere: nowhere deeper than the shell's band reached.
         volume::LowResShellOptions solid = settings.shell;
         solid.solid = true;
+        solid.solid_depth = 2.0 * settings.shell.thickness;
         result.shell = shell_from_mesh(input, solid, progress, &low_res);
     }
     clock.lap("precompute_shell");

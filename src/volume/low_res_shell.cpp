@@ -1,5 +1,6 @@
 //! low_res_shell: signed_distance_from_mesh → low_res_surface → shell_prisms,
-//! with the voxel size from the S_low edge length (and ω) and a narrow band
+//! with the voxel size from the S_low edge length (and ω, and a closed
+//! input's mean thickness) and a narrow band
 //! deep enough for the medial depths the thin-feature test needs.
 #include "volume/low_res_shell.h"
 
@@ -8,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/stage_clock.h"
+#include "volume/closed_manifold.h"
 #include "volume/low_res_surface.h"
 #include "volume/memory_estimate.h"
 #include "volume/shell_prisms.h"
@@ -25,9 +27,16 @@ LowResShell low_res_shell(const Mesh& input, const LowResShellOptions& options, 
     const BoundingBox box = bounding_box(input);
     const double extent = std::max({box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]});
     const double edge = edge_length_for_triangles(area, options.target_triangles);
-    const double max_depth = options.solid ? 0.5 * extent : 2.0 * options.thickness;
+    if (!(options.solid_depth >= 0)) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the solid depth must be >= 0");
+    const double max_depth = !options.solid             ? 2.0 * options.thickness
+                             : options.solid_depth > 0 ? std::min(options.solid_depth, 0.5 * extent)
+                                                       : 0.5 * extent;
     result.thickness = options.solid ? max_depth : options.thickness;
     result.voxel_size = options.solid ? 0.5 * edge : std::min(0.5 * edge, options.thickness / 3.0);
+    if (area > 0 && is_closed_manifold(input)) {
+        const double mean_thickness = 2.0 * std::abs(signed_volume(input)) / area;
+        result.voxel_size = std::min(result.voxel_size, std::max(mean_thickness / 2.5, result.voxel_size / 8.0));
+    }
     result.half_band_voxels = int(std::ceil(max_depth / result.voxel_size)) + 3;
 
     SignedDistanceOptions sdf;

@@ -4,7 +4,10 @@
 //! prism inner vertices and medial depths (shell_prisms). Plain types only,
 //! so callers outside the volume module need no OpenVDB. `solid`: prisms
 //! reach the medial axis (depths up to half the longest side), and ω is the
-//! depth of the solid's deepest point, plus two voxels. Cancellable;
+//! depth of the solid's deepest point, plus two voxels. A closed input
+//! thinner on average than the voxel would be (its mean thickness 2V/A, a
+//! plate's own) gets a voxel 2.5 times finer than that mean, at most 8 times
+//! finer than the automatic one, so that voxels lie inside it. Cancellable;
 //! refuses with Error(OUT_OF_BUDGET) before exceeding the memory budget.
 #pragma once
 
@@ -22,6 +25,10 @@ struct LowResShellOptions {
     size_t target_triangles = 10000;  //!< S_low size N_Δ
     double thickness = 0;             //!< ω in mm (ignored when solid)
     bool solid = false;
+    //! mm the band reaches inside when solid; 0: half the longest side. A
+    //! caller that knows the part is nowhere deeper (decompose_mesh, for a
+    //! part thin everywhere) keeps the band, and the memory, small.
+    double solid_depth = 0;
     uint64_t memory_budget_bytes = 0;
     std::string input_name = "mesh";
 };

@@ -2,7 +2,8 @@
 // and depths are known: a 40 × 40 × 8 mm slab is 4 mm deep at most. As a
 // shell of ω = 1 mm every inner vertex lies about ω inside, with ω kept; cast
 // solid, the inner vertices reach the mid-plane and ω becomes the deepest
-// point (4 mm) plus two voxels, not half the longest side (20 mm).
+// point (4 mm) plus two voxels, not half the longest side (20 mm). A plate
+// thinner than the automatic voxel is sampled finer, so voxels lie inside.
 #include "volume/low_res_shell.h"
 
 #include <gtest/gtest.h>
@@ -62,6 +63,30 @@ TEST(LowResShell, SolidReachesTheMidPlaneAndOmegaIsTheDeepestPoint) {
         ++checked;
     }
     EXPECT_GT(checked, 100u);
+}
+
+TEST(LowResShell, PlateThinnerThanTheAutomaticVoxelIsSampledInside) {
+    // A 60 × 60 × 0.5 mm plate: at 3000 triangles the automatic voxel
+    // (half an edge, about 0.9 mm) would leave no voxel inside it.
+    const Vec3 plate_lo{-30, -30, 0}, plate_hi{30, 30, 0.5};
+    Progress progress;
+    for (bool solid : {false, true}) {
+        LowResShellOptions options;
+        options.target_triangles = 3000;
+        options.thickness = 1.8;
+        options.solid = solid;
+        options.solid_depth = solid ? 3.6 : 0.0;
+        const LowResShell shell = low_res_shell(test::make_box(plate_lo, plate_hi), options, progress);
+        EXPECT_LE(shell.voxel_size, 0.5 / 2.5 + 1e-12) << "solid " << solid;
+        EXPECT_GT(shell.outer.triangles.size(), 1000u) << "solid " << solid;
+        // Each inner vertex lies in the plate, at most half its thickness deep.
+        for (size_t v = 0; v < shell.inner.size(); ++v) {
+            const Vec3& p = shell.inner[v];
+            EXPECT_GE(p[2], -shell.voxel_size) << v;
+            EXPECT_LE(p[2], 0.5 + shell.voxel_size) << v;
+        }
+        if (solid) EXPECT_LT(shell.thickness, 0.25 + 3.0 * shell.voxel_size);
+    }
 }
 
 TEST(LowResShell, RefusesAnEmptyMeshAndAShellWithoutThickness) {
