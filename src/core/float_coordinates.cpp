@@ -1,6 +1,10 @@
 //! Coordinates as float-storing files hold them (see float_coordinates.h).
 #include "core/float_coordinates.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace fabvdb {
 
 double nearest_float(double x) {
@@ -21,6 +25,14 @@ Vec3 stored_position(const Vec3& local, const CentredFrame& frame) {
     Vec3 stored;
     for (int k = 0; k < 3; ++k) stored[k] = nearest_float(local[k] + frame.offset[k]) - frame.offset[k];
     return stored;
+}
+
+double float_step_over(const BoundingBox& local, const CentredFrame& frame) {
+    double largest = 0.0;
+    for (int k = 0; k < 3; ++k)
+        largest = std::max({largest, std::abs(local.min[k] + frame.offset[k]), std::abs(local.max[k] + frame.offset[k])});
+    const float at = static_cast<float>(largest);
+    return double(std::nextafter(at, std::numeric_limits<float>::infinity())) - double(at);
 }
 
 }  // namespace fabvdb

@@ -19,4 +19,9 @@ bool on_float_grid(const Mesh& mesh);
 //! position is stored as floats, in the same local coordinates.
 Vec3 stored_position(const Vec3& local, const CentredFrame& frame);
 
+//! The float step at the largest world coordinate of a box given in
+//! `frame`'s local coordinates: storing a point of it as floats moves each
+//! coordinate by at most half of it (the step is 2 mm at 25 km).
+double float_step_over(const BoundingBox& local, const CentredFrame& frame);
+
 }  // namespace fabvdb

@@ -5,6 +5,7 @@
 
 #include "core/centred_frame.h"
 #include "core/error.h"
+#include "core/float_coordinates.h"
 #include "core/stage_clock.h"
 #include "volume/closed_manifold.h"
 #include "volume/crossing_pairs.h"
@@ -48,9 +49,13 @@ uint64_t extract_clean_surface(const OrientedInput& input, const RepairOptions& 
                             "mend it in a mesh editor, or give --thicken to take it as a sheet");
         bool crossing = false;
         if (options.snap) {
-            const SnapResult snap =
-                snap_to_mesh(result.mesh, input.mesh, *input.closest_triangle, result.grid->voxelSize()[0], frame,
-                             progress);
+            // Vertices go where a float file stores them, unless floats are
+            // coarser there than a thousandth of a voxel: so far off a
+            // model is for OBJ or PLY, which hold doubles.
+            const double voxel = result.grid->voxelSize()[0];
+            const bool floats_hold = float_step_over(bounding_box(result.mesh), frame) <= 1e-3 * voxel;
+            const SnapResult snap = snap_to_mesh(result.mesh, input.mesh, *input.closest_triangle, voxel,
+                                                 floats_hold ? &frame : nullptr, progress);
             clock.lap("snap");
             result.snapped_vertices = snap.moved_vertices;
             crossing = snap.self_intersecting;

@@ -48,7 +48,8 @@ RepairResult repair(const Mesh& mesh, const RepairOptions& options, Progress& pr
 
 //! The same on a mesh already moved into `frame` (centred_frame.h), with the
 //! result in that frame; its snapped surface is placed where a float file
-//! stores it once moved back (snap_to_mesh.h).
+//! stores it once moved back (snap_to_mesh.h), where floats are finer than
+//! a thousandth of a voxel.
 RepairResult repair_in_frame(const Mesh& mesh, const RepairOptions& options, const CentredFrame& frame,
                              Progress& progress);
 

@@ -55,7 +55,9 @@ size_t revert(Mesh& surface, const Mesh& original, const Triangle& t, std::vecto
 // Moves every vertex of the surface whose closest input point is within
 // max_distance onto it when the input there faces the surface's way.
 void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
-                     double max_distance, const CentredFrame& frame, std::vector<char>& moved, Progress& progress) {
+                     double max_distance, const CentredFrame* float_frame, std::vector<char>& moved,
+                     Progress& progress) {
+    const auto stored = [float_frame](const Vec3& p) { return float_frame ? stored_position(p, *float_frame) : p; };
     const NearestTriangle nearest(input, closest_triangle);
     const std::vector<Vec3> vertex_normal = area_weighted_vertex_normals(surface);
     // The closest input point of each vertex and the unit normal there; a
@@ -86,7 +88,7 @@ void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid&
     const double max_squared = max_distance * max_distance;
     for (size_t v = 0; v < surface.vertices.size(); ++v) {
         if (features.has_target[v]) {
-            surface.vertices[v] = stored_position(features.target[v], frame);
+            surface.vertices[v] = stored(features.target[v]);
             moved[v] = 1;
             continue;
         }
@@ -95,7 +97,7 @@ void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid&
         const Vector n_surface(vertex_normal[v][0], vertex_normal[v][1], vertex_normal[v][2]);
         const double length = std::sqrt(n_surface.squared_length());
         if (!(length > 0.0) || std::abs(n_input * n_surface) < min_facing * length) continue;
-        surface.vertices[v] = stored_position(closest[v], frame);
+        surface.vertices[v] = stored(closest[v]);
         moved[v] = 1;
     }
     progress.check();
@@ -104,13 +106,14 @@ void move_onto_input(Mesh& surface, const Mesh& input, const openvdb::Int32Grid&
 }  // namespace
 
 SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
-                        double max_distance, const CentredFrame& frame, Progress& progress) {
+                        double max_distance, const CentredFrame* float_frame, Progress& progress) {
     progress.stage("snap");
     SnapResult result;
-    for (Vec3& p : surface.vertices) p = stored_position(p, frame);
+    if (float_frame)
+        for (Vec3& p : surface.vertices) p = stored_position(p, *float_frame);
     const Mesh original = surface;
     std::vector<char> moved(surface.vertices.size(), 0);
-    move_onto_input(surface, input, closest_triangle, max_distance, frame, moved, progress);
+    move_onto_input(surface, input, closest_triangle, max_distance, float_frame, moved, progress);
     progress.update(0.6);
 
     // Undo moves that flip or squash a triangle, then moves that make two

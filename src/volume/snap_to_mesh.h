@@ -9,10 +9,11 @@
 //! (feature_targets.h), so the extraction's chamfers disappear. Moves that would
 //! make two triangles cross (crossing_pairs.h) are undone; crossings where
 //! no vertex moved, i.e. of the surface as given, are reported. Topology is
-//! unchanged. Every vertex is placed where a float file stores it: the
-//! surface is given in `frame`'s local coordinates, and the tests above see
-//! the positions as stored (float_coordinates.h), so rounding on writing
-//! makes no new crossing. Closest points are found from `closest_triangle` (per voxel
+//! unchanged. With `float_frame`, every vertex is placed where a float file
+//! stores it: the surface is given in that frame's local coordinates, and
+//! the tests above see the positions as stored (float_coordinates.h), so
+//! rounding on writing makes no new crossing; nullptr keeps the positions
+//! as computed. Closest points are found from `closest_triangle` (per voxel
 //! near the input, its nearest input triangle: OrientedInput in
 //! signed_distance.h) by NearestTriangle (nearest_triangle.h), which needs
 //! `input` welded. Parallel; reports progress; throws Error(CANCELLED).
@@ -35,6 +36,6 @@ struct SnapResult {
 };
 
 SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, const openvdb::Int32Grid& closest_triangle,
-                        double max_distance, const CentredFrame& frame, Progress& progress);
+                        double max_distance, const CentredFrame* float_frame, Progress& progress);
 
 }  // namespace fabvdb::volume

@@ -1,6 +1,7 @@
 // Coordinates as float-storing files hold them: rounding to the nearest
 // float (checked against nextafterf neighbours, not against a cast), the
-// float-grid test, and a local point's stored position in a far frame.
+// float-grid test, a local point's stored position in a far frame, and the
+// float step over a box there.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,6 +38,14 @@ TEST(FloatCoordinates, FloatGridAndStoredPositions) {
     EXPECT_EQ(stored[0] + 4000.0, double(float(4000.1)));
     EXPECT_EQ(stored[1], double(0.1f));
     EXPECT_LE(std::abs(stored[0] - local[0]), std::ldexp(1.0, -13));
+
+    // The step over a box: 2^-12 mm at 4 km, 2 mm at 25 km (2^24 .. 2^25 mm).
+    fabvdb::BoundingBox box;
+    box.min = {-10, -10, -10};
+    box.max = {10, 10, 10};
+    EXPECT_EQ(fabvdb::float_step_over(box, frame), std::ldexp(1.0, -12));
+    frame.offset = {0.0, -2.5e7, 0.0};
+    EXPECT_EQ(fabvdb::float_step_over(box, frame), 2.0);
 }
 
 }  // namespace

@@ -184,7 +184,8 @@ TEST(Repair, HolesAreClosedNearTheInput) {
 }
 
 // A box whose corners and edges lie off the voxel grid: the extraction cuts
-// them (a chamfer up to a voxel deep), snapping puts them back exactly.
+// them (a chamfer up to a voxel deep), snapping puts them back, to the
+// float step the stored mesh has (1e-6 mm at 10 mm).
 TEST(Repair, SharpCornersAndEdgesAreKept) {
     const fabvdb::Vec3 low{0.13, 0.27, 0.31}, high{10.41, 7.77, 5.59};
     const Mesh box = fabvdb::test::make_box(low, high);
@@ -201,7 +202,7 @@ TEST(Repair, SharpCornersAndEdgesAreKept) {
         double nearest = std::numeric_limits<double>::infinity();
         for (const auto& v : result.mesh.vertices)
             nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(c, Point(v[0], v[1], v[2]))));
-        EXPECT_LT(nearest, 1e-9) << "corner " << corner;
+        EXPECT_LT(nearest, 1e-6) << "corner " << corner;
     }
     std::vector<Point> edge_points;
     for (int axis = 0; axis < 3; ++axis)

@@ -51,7 +51,7 @@ TEST(SnapToMesh, GrownSphereSnapsBackOntoTheInputVertices) {
     ASSERT_TRUE(input.closest_triangle);
     Mesh surface = scaled(input.mesh, grown);
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, &origin, progress);
     EXPECT_EQ(result.moved_vertices, surface.vertices.size());
     EXPECT_FALSE(result.self_intersecting);
     ASSERT_EQ(surface.vertices.size(), input.mesh.vertices.size());
@@ -60,13 +60,22 @@ TEST(SnapToMesh, GrownSphereSnapsBackOntoTheInputVertices) {
     EXPECT_EQ(surface.triangles, input.mesh.triangles);
 }
 
+TEST(SnapToMesh, WithoutAFloatFrameVerticesKeepDoubles) {
+    const OrientedInput input = sphere_input();
+    Mesh surface = scaled(input.mesh, grown);
+    Progress progress;
+    snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, nullptr, progress);
+    for (size_t v = 0; v < surface.vertices.size(); ++v)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(surface.vertices[v][k], input.mesh.vertices[v][k], 1e-9) << "vertex " << v;
+}
+
 TEST(SnapToMesh, InAFarFrameVerticesLandOnTheWorldFloatGrid) {
     const OrientedInput input = sphere_input();
     Mesh surface = scaled(input.mesh, grown);
     CentredFrame far;
     far.offset = {4000.0, -3000.0, 0.0};  // a float step of 2^-12 mm there
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, far, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, &far, progress);
     EXPECT_EQ(result.moved_vertices, surface.vertices.size());
     EXPECT_FALSE(result.self_intersecting);
     EXPECT_TRUE(crossing_pairs(surface).empty());
@@ -83,7 +92,7 @@ TEST(SnapToMesh, NothingWithinMaxDistanceMovesNothing) {
     const Mesh before = scaled(input.mesh, grown);  // 0.1 mm out
     Mesh surface = before;
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, 0.05, origin, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, 0.05, &origin, progress);
     EXPECT_EQ(result.moved_vertices, 0u);
     EXPECT_FALSE(result.self_intersecting);
     EXPECT_EQ(surface.vertices, before.vertices);
@@ -94,7 +103,7 @@ TEST(SnapToMesh, PieceFarFromTheInputStays) {
     const Mesh far = test::make_box({20, 20, 20}, {21, 21, 21});
     Mesh surface = test::merged(scaled(input.mesh, grown), far);
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, &origin, progress);
     EXPECT_EQ(result.moved_vertices, input.mesh.vertices.size());
     const size_t first = input.mesh.vertices.size();
     for (size_t v = 0; v < far.vertices.size(); ++v) EXPECT_EQ(surface.vertices[first + v], far.vertices[v]);
@@ -122,7 +131,7 @@ TEST(SnapToMesh, MovesThatWouldCutAFinAreUndone) {
 
     Mesh surface = before;
     Progress progress;
-    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
+    const SnapResult result = snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, &origin, progress);
     EXPECT_FALSE(result.self_intersecting);
     EXPECT_TRUE(crossing_pairs(surface).empty());
     EXPECT_TRUE(test::self_intersects(surface) == false);
@@ -156,7 +165,7 @@ TEST(SnapToMesh, CancelledThrows) {
     std::atomic<bool> cancel{true};
     Progress progress(nullptr, nullptr, &cancel);
     try {
-        snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, origin, progress);
+        snap_to_mesh(surface, input.mesh, *input.closest_triangle, voxel, &origin, progress);
         ADD_FAILURE() << "not cancelled";
     } catch (const Error& e) {
         EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);
