@@ -49,8 +49,10 @@ bool closed(const Mesh& mesh) {
 }
 
 //! The low-resolution surface must lie on the input's surface: its vertices
-//! within 1% of the diagonal on average, 5% at most, and its bounding box
-//! the input's within 5% of the diagonal.
+//! within 1% of the diagonal on average, and its bounding box the input's
+//! within 5% of the diagonal. No bound on the farthest vertex: an open scan
+//! is decomposed closed, and the cap over its hole lies far from any input
+//! triangle (falconstatue_boundary: 5.6 mm, 8% of the diagonal).
 void require_fit(const std::vector<Vec3>& low_res, const Mesh& input, const std::string& name) {
     const BoundingBox box = bounding_box(input);
     const double diagonal = box.diagonal();
@@ -70,7 +72,7 @@ void require_fit(const std::vector<Vec3>& low_res, const Mesh& input, const std:
         largest = std::max(largest, d);
     }
     const double mean = sum / double(count);
-    if (box_error > 0.05 * diagonal || mean > 0.01 * diagonal || largest > 0.05 * diagonal) {
+    if (box_error > 0.05 * diagonal || mean > 0.01 * diagonal) {
         std::ostringstream message;
         message << "does not belong to this input (made for another model or another scale): its surface lies "
                 << mean << " mm from the input on average, " << largest << " mm at most, its bounding box "

@@ -3,7 +3,8 @@
 // ray casting, edge pairing and CGAL predicates (support/mold_checks.h), the
 // parts disjoint and reproducing the input (distances measured here by brute
 // force), a fin thinner than a voxel cast all the same, and bad
-// decompositions refused with a message naming the defect.
+// decompositions refused with a message naming the defect, while one of
+// the same model scanned open is taken.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -194,6 +195,22 @@ TEST_F(MoldGeneration, BadDecompositionsAreRefused) {
     open["parts"][0]["surface"]["triangles"].erase(0);
     expect_refused(open, *input_, "not closed");
     expect_refused(nlohmann::json{{"format", "something else"}}, *input_, "not a fabvdb decomposition");
+}
+
+TEST_F(MoldGeneration, DecompositionOfAnOpenScanFitsTheScan) {
+    // The sphere with a cap 2.5 mm high cut away, as an open scan: the
+    // decomposition (closed over the hole) lies 10 mm from the scan at the
+    // pole, far over 5% of the diagonal, but on it elsewhere.
+    Mesh open = *input_;
+    open.triangles.clear();
+    for (const fabvdb::Triangle& t : input_->triangles) {
+        double z = 0;
+        for (uint32_t v : t) z += input_->vertices[v][2] / 3.0;
+        if (z < 3.0 + 17.5) open.triangles.push_back(t);
+    }
+    ASSERT_LT(open.triangles.size(), input_->triangles.size());
+    const auto model = fabvdb::surface::decomposed_parts(*document_, "sphere.json", open);
+    EXPECT_EQ(model.parts.size(), document_->at("parts").size());
 }
 
 TEST_F(MoldGeneration, CancelledGenerationThrowsCancelled) {
