@@ -70,6 +70,7 @@ static int run_mold(cli_run* run) {
     fabvdb_report_number(run->ctx, report, "/hausdorff_ratio", &hausdorff);
     printf("%.0f parts with their molds; distance to the input: mean %.4f%%, max %.3f%% of the diagonal\n", count,
            100 * mean, 100 * hausdorff);
+    cli_print_warnings(run, report);
     cli_note(run, "wrote %s", output->text);
     code = cli_write_report(run, report);
     fabvdb_report_free(report);

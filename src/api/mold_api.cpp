@@ -171,6 +171,11 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         report["mean_distance_ratio"] = result.mean_distance / result.diagonal;
         report["hausdorff_ratio"] = result.max_distance / result.diagonal;
         report["lost_triangles"] = result.lost_triangles;
+        report["vanished_parts"] = result.vanished_parts;
+        report["warnings"] = nlohmann::json::array();
+        for (int id : result.vanished_parts)
+            report["warnings"].push_back(mesh->name + ": part " + std::to_string(id) +
+                                         " vanished in the sweep (the other parts took all of it): no mold for it");
         report["timings"] = result.seconds;
         if (!decomposition_path) report["timings"]["decomposition"] = own_stages["decomposition"];
         report["timings"]["write"] = clock.lap("write");

@@ -159,10 +159,12 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         CastPart cast;
         cast.id = model.parts[p].id;
         cast.direction = model.parts[p].direction;
-        cast.part = volume::double_height_field_mesh(
-            *made[p], progress, input_grid.get(),
-            options.input_name + ": part " + std::to_string(cast.id) +
-                " (swept along its direction, kept out of the other parts)");
+        cast.part = volume::double_height_field_mesh(*made[p], progress, input_grid.get());
+        if (cast.part.triangles.empty()) {
+            // A sliver the other parts took whole: nothing of its own to cast.
+            result.vanished_parts.push_back(cast.id);
+            continue;
+        }
         const OverhangDeformation& deformation = deformations[p];
         cast.deformed_volume_change = deformation.volume_after - deformation.volume_before;
         cast.given_volume = handed.given[p];
@@ -183,6 +185,9 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         progress.stage("mold: parts");
         progress.update(double(p + 1) / double(model.parts.size()));
     }
+    if (result.parts.empty())
+        throw Error(FABVDB_ERR_BAD_INPUT, options.input_name + ": every part vanished in the sweep, each taken by "
+                                                              "the others: the decomposition leaves nothing to cast");
     if (options.common_mold) {
         std::vector<Mesh> parts;
         std::vector<Vec3> directions, offsets;

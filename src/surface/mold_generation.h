@@ -86,12 +86,15 @@ struct MoldGeneration {
     //! Input triangles with surface the input's level set lost (thinner than
     //! a voxel), kept in a tube a voxel thick (volume/keep_lost_surface.h).
     size_t lost_triangles = 0;
+    //! Ids of parts the others took whole in the sweep (slivers with no
+    //! column of their own): dropped, with no cast part or mold.
+    std::vector<int> vanished_parts;
     std::map<std::string, double> seconds;  //!< per stage
 };
 
 //! `input`: the full-resolution model the decomposition was made for.
-//! Throws Error(INVALID_ARGUMENT) for options out of range, BAD_INPUT for a
-//! part that vanishes or cannot be molded, OUT_OF_BUDGET, CANCELLED.
+//! Throws Error(INVALID_ARGUMENT) for options out of range, BAD_INPUT when
+//! every part vanishes or one cannot be molded, OUT_OF_BUDGET, CANCELLED.
 MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, const MoldGenerationOptions& options,
                               Progress& progress);
 

@@ -9,7 +9,6 @@
 
 #include <openvdb/tools/Dense.h>
 
-#include "core/error.h"
 #include "volume/column_runs.h"
 
 namespace fabvdb::volume {
@@ -44,10 +43,10 @@ Column scan_column(const float* column, size_t nz, float z0, const SurfaceCrossi
 }  // namespace
 
 Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress,
-                              const openvdb::FloatGrid* kept_surface, const std::string& what) {
+                              const openvdb::FloatGrid* kept_surface) {
     progress.stage("mold: part surface");
     openvdb::CoordBBox box = swept.evalActiveVoxelBoundingBox();
-    if (box.empty()) throw Error(FABVDB_ERR_BAD_INPUT, what + " is empty");
+    if (box.empty()) return Mesh{};
     box.expand(1);
     const openvdb::Coord dim = box.dim();
     const int nx = dim.x(), ny = dim.y();
@@ -164,8 +163,7 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
         }
     }
     progress.check();
-    if (!any_inside) throw Error(FABVDB_ERR_BAD_INPUT, what + " has no inside column");
-    return mesh;
+    return any_inside ? mesh : Mesh{};
 }
 
 }  // namespace fabvdb::volume

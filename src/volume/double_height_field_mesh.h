@@ -13,8 +13,6 @@
 //! faces parallel to d, and in world coordinates. Cancellable.
 #pragma once
 
-#include <string>
-
 #include <openvdb/openvdb.h>
 
 #include "core/mesh.h"
@@ -24,11 +22,9 @@ namespace fabvdb::volume {
 
 //! `swept`: a level set on a linear transform (sweep_double_height_field's
 //! result). `kept_surface`: a level set whose zero crossings a column's kept
-//! run should hold (the input surface; nullptr: the longest run). Throws
-//! Error(BAD_INPUT) when no column is inside, the message naming the grid
-//! as `what` (the file and part it is).
+//! run should hold (the input surface; nullptr: the longest run). An empty
+//! mesh when no column is inside (the part vanished).
 Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress,
-                              const openvdb::FloatGrid* kept_surface = nullptr,
-                              const std::string& what = "the swept part");
+                              const openvdb::FloatGrid* kept_surface = nullptr);
 
 }  // namespace fabvdb::volume

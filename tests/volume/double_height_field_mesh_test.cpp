@@ -99,11 +99,16 @@ TEST(DoubleHeightFieldMeshKeepOut, ColumnsWithTwoRunsKeepTheOneHoldingTheKeptSur
     EXPECT_TRUE(caster.inside({5, 5, 4.5}));
 }
 
-TEST(DoubleHeightFieldMeshErrors, EmptyGridIsBadInputAndCancelIsHonoured) {
+TEST(DoubleHeightFieldMeshErrors, EmptyGridGivesNoMeshAndCancelIsHonoured) {
     openvdb::initialize();
     fabvdb::Progress progress;
     openvdb::FloatGrid empty;
-    EXPECT_THROW(fabvdb::volume::double_height_field_mesh(empty, progress), fabvdb::Error);
+    EXPECT_TRUE(fabvdb::volume::double_height_field_mesh(empty, progress).triangles.empty());
+    // Active voxels, none inside: no column is inside.
+    openvdb::FloatGrid outside(1.0f);
+    outside.tree().setValueOn(openvdb::Coord(0, 0, 0), 0.5f);
+    outside.tree().setValueOn(openvdb::Coord(0, 0, 1), 0.7f);
+    EXPECT_TRUE(fabvdb::volume::double_height_field_mesh(outside, progress).triangles.empty());
     const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
     auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.5), {0, 0, 1}, {}, {}, progress);
     std::atomic<bool> cancel{true};
