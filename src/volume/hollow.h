@@ -56,7 +56,7 @@ struct HollowResult {
     double volume_solid = 0.0;   //!< mm³ enclosed by the outer surface
     double volume_shell = 0.0;   //!< mm³ of material left
     std::vector<double> cavity_volumes;         //!< mm³ per void kept
-    std::vector<double> filled_cavity_volumes;  //!< mm³ per void filled (under the minimum)
+    std::vector<double> filled_cavity_volumes;  //!< mm³ per void filled (under the minimum, or touching the outside)
     double min_wall_at_vertices = 0.0;          //!< smallest cavity-vertex distance to the outer surface
     std::map<std::string, double> timings;      //!< seconds per stage
     //! What the caller should tell the user: a part too thin for a cavity
