@@ -35,7 +35,7 @@ LowResShell low_res_shell(const Mesh& input, const LowResShellOptions& options, 
     result.voxel_size = options.solid ? 0.5 * edge : std::min(0.5 * edge, options.thickness / 3.0);
     if (area > 0 && is_closed_manifold(input)) {
         const double mean_thickness = 2.0 * std::abs(signed_volume(input)) / area;
-        result.voxel_size = std::min(result.voxel_size, std::max(mean_thickness / 2.5, result.voxel_size / 8.0));
+        result.voxel_size = std::min(result.voxel_size, std::max(mean_thickness / 2.0, result.voxel_size / 8.0));
     }
     result.half_band_voxels = int(std::ceil(max_depth / result.voxel_size)) + 3;
 

@@ -5,9 +5,9 @@
 //! so callers outside the volume module need no OpenVDB. `solid`: prisms
 //! reach the medial axis (depths up to half the longest side), and ω is the
 //! depth of the solid's deepest point, plus two voxels. A closed input
-//! thinner on average than the voxel would be (its mean thickness 2V/A, a
-//! plate's own) gets a voxel 2.5 times finer than that mean, at most 8 times
-//! finer than the automatic one, so that voxels lie inside it. Cancellable;
+//! thinner on average than two voxels (its mean thickness 2V/A, a plate's
+//! own) gets a voxel of half that mean, at most 8 times finer than the
+//! automatic one, so that voxel centres lie inside it. Cancellable;
 //! refuses with Error(OUT_OF_BUDGET) before exceeding the memory budget.
 #pragma once
 

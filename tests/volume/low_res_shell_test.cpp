@@ -77,7 +77,7 @@ TEST(LowResShell, PlateThinnerThanTheAutomaticVoxelIsSampledInside) {
         options.solid = solid;
         options.solid_depth = solid ? 3.6 : 0.0;
         const LowResShell shell = low_res_shell(test::make_box(plate_lo, plate_hi), options, progress);
-        EXPECT_LE(shell.voxel_size, 0.5 / 2.5 + 1e-12) << "solid " << solid;
+        EXPECT_LE(shell.voxel_size, 0.5 / 2.0 + 1e-12) << "solid " << solid;
         EXPECT_GT(shell.outer.triangles.size(), 1000u) << "solid " << solid;
         // Each inner vertex lies in the plate, at most half its thickness deep.
         for (size_t v = 0; v < shell.inner.size(); ++v) {
