@@ -109,8 +109,16 @@ SnapResult snap_to_mesh(Mesh& surface, const Mesh& input, const openvdb::Int32Gr
                         double max_distance, const CentredFrame* float_frame, Progress& progress) {
     progress.stage("snap");
     SnapResult result;
-    if (float_frame)
+    if (float_frame) {
+        const std::vector<Vec3> computed = surface.vertices;
         for (Vec3& p : surface.vertices) p = stored_position(p, *float_frame);
+        // Corners of a triangle that rounding flattens keep their computed
+        // position; the writer's float rounding places them (float_rounding.h).
+        for (const Triangle& t : surface.triangles)
+            if (CGAL::collinear(point(surface.vertices[t[0]]), point(surface.vertices[t[1]]),
+                                point(surface.vertices[t[2]])))
+                for (uint32_t v : t) surface.vertices[v] = computed[v];
+    }
     const Mesh original = surface;
     std::vector<char> moved(surface.vertices.size(), 0);
     move_onto_input(surface, input, closest_triangle, max_distance, float_frame, moved, progress);

@@ -12,8 +12,10 @@
 //! unchanged. With `float_frame`, every vertex is placed where a float file
 //! stores it: the surface is given in that frame's local coordinates, and
 //! the tests above see the positions as stored (float_coordinates.h), so
-//! rounding on writing makes no new crossing; nullptr keeps the positions
-//! as computed. Closest points are found from `closest_triangle` (per voxel
+//! rounding on writing makes no new crossing (the corners of a triangle
+//! that rounding would flatten keep their computed position, for the
+//! writer's float rounding to place); nullptr keeps the positions as
+//! computed. Closest points are found from `closest_triangle` (per voxel
 //! near the input, its nearest input triangle: OrientedInput in
 //! signed_distance.h) by NearestTriangle (nearest_triangle.h), which needs
 //! `input` welded. Parallel; reports progress; throws Error(CANCELLED).
