@@ -97,13 +97,14 @@ openvdb::FloatGrid::Ptr fill_cavities_at(const openvdb::FloatGrid& cavity, const
 }  // namespace
 
 bool is_hollow_shell(const Mesh& mesh, Progress& progress) {
-    if (!volume::check_solid(mesh, progress).clean) return false;
     size_t count = 0;
     const std::vector<uint32_t> component = surface::triangle_components(mesh, count);
     const std::vector<double> volume = surface::component_signed_volumes(mesh, component, count);
     double outer = 0.0, voids = 0.0;
     for (double v : volume) (v < 0 ? voids : outer) += std::abs(v);
-    return voids > 1e-6 * outer && voids > 0.0;
+    // The exact solid check last: a part without inward shells (the usual
+    // input) is hollowed, and hollowing runs that check itself.
+    return voids > 1e-6 * outer && voids > 0.0 && volume::check_solid(mesh, progress).clean;
 }
 
 DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, Progress& progress) {
