@@ -3,18 +3,19 @@
 //! 1. orient_soup: weld, drop degenerate/duplicate triangles, orient every
 //!    piece consistently and outward.
 //! 2. Unsigned distance in a narrow band (OpenVDB meshToVolume, unsigned).
-//! 3. Sign of every band voxel from the winding number (inside: w >= 1/2);
-//!    for a closed-cycle input (closed_cycle.h) once per group of voxels
-//!    with no surface between them.
+//! 3. Sign of every band voxel from the winding number (inside: w >= 1/2),
+//!    taken once per group of voxels with no surface between them where the
+//!    bound on its gradient (winding_gradient_bound.h) shows the group on one
+//!    side, else voxel by voxel (leaf_winding.h).
 //! 4. If the signed band is a consistent distance field (every sign change
 //!    between neighbours is a surface crossing, no surface voxel without one)
 //!    the interior is flood-filled and we are done. Otherwise (holes wider
 //!    than the band, interior or overlapping triangles, parts thinner than a
 //!    voxel) the band is rebuilt from the zero surface of the field, off the
 //!    band flood-filled for a closed-cycle input; for any other the winding
-//!    number is sampled off the band first — every voxel of band leaves, and
-//!    the leaf-sized blocks of the bounding box, voxel by voxel where w
-//!    crosses 1/2 — so that it closes the holes.
+//!    number is sampled off the band first — the other voxels of band
+//!    leaves, and the leaf-sized blocks of the bounding box, by groups again
+//!    and voxel by voxel where w may cross 1/2 — so that it closes the holes.
 #include "volume/signed_distance.h"
 
 #include <atomic>
@@ -38,6 +39,8 @@
 #include "volume/progress_interrupter.h"
 #include "volume/rebuild_band.h"
 #include "volume/unsigned_band.h"
+#include "volume/leaf_winding.h"
+#include "volume/winding_gradient_bound.h"
 #include "volume/winding_number.h"
 
 namespace fabvdb::volume {
@@ -47,9 +50,8 @@ namespace {
 using FloatLeaf = openvdb::FloatTree::LeafNodeType;
 constexpr int leaf_dim = int(FloatLeaf::DIM);
 constexpr int leaf_size = int(FloatLeaf::SIZE);
-// Inside is w >= 1/2; an input counts as enclosing volume when some band voxel
-// is clearly inside (w >= 0.6, above the dipole approximation's error).
-constexpr double inside_threshold = 0.5;
+// An input counts as enclosing volume when some band voxel is clearly inside
+// (w >= 0.6, above the dipole approximation's error).
 constexpr double clearly_inside = 0.6;
 // Under this share of its area enclosing volume (enclosed_share.h) an input
 // encloses nothing: soups, sheets and bowls measure under 0.05, scans with
@@ -86,85 +88,16 @@ void for_each_index(size_t count, Progress& progress, const Body& body) {
     progress.check();
 }
 
-Vec3 world_position(const openvdb::math::Transform& transform, const openvdb::Coord& ijk) {
-    const openvdb::Vec3d p = transform.indexToWorld(ijk);
-    return {p[0], p[1], p[2]};
+// The box of a leaf's voxel centres, in mm.
+BoundingBox leaf_box(const FloatLeaf& leaf, const openvdb::math::Transform& transform) {
+    const openvdb::Vec3d lo = transform.indexToWorld(leaf.origin());
+    const openvdb::Vec3d hi = transform.indexToWorld(leaf.origin().offsetBy(leaf_dim - 1));
+    return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
 
-// The winding number at every active voxel of one leaf of the unsigned band,
-// into w[offset], for a closed-cycle input, whose winding number is constant
-// off the surface. Two face or edge neighbours whose distances add up to more
-// than the length between them have no surface between them (meshToVolume
-// gives a voxel within 1.5 voxels of a triangle its exact distance to it), so
-// they share w. The leaf's voxels are grouped over such links and w is taken
-// once per group, at its voxel farthest from the surface, where the tree is
-// most accurate; a large group is checked at a second voxel away from the
-// first, and taken voxel by voxel if the two disagree about the side.
-void closed_cycle_leaf_winding(const FloatLeaf& leaf, const WindingNumber& winding,
-                               const openvdb::math::Transform& transform, float* w) {
-    const double voxel = transform.voxelSize()[0];
-    static constexpr int forward[9][3] = {{0, 0, 1}, {0, 1, -1}, {0, 1, 0}, {0, 1, 1}, {1, -1, 0},
-                                          {1, 0, -1}, {1, 0, 0}, {1, 0, 1}, {1, 1, 0}};
-    double link_length[9];
-    for (int s = 0; s < 9; ++s)
-        link_length[s] =
-            voxel * std::sqrt(double(forward[s][0] * forward[s][0] + forward[s][1] * forward[s][1] + forward[s][2] * forward[s][2]));
-    const auto position = [](int offset) { return openvdb::Coord(offset >> 6, (offset >> 3) & 7, offset & 7); };
-    int16_t group[leaf_size];
-    const auto root = [&](int i) {
-        while (group[i] != i) i = group[i] = group[group[i]];
-        return i;
-    };
-    const auto& active = leaf.getValueMask();
-    const float* values = leaf.buffer().data();
-    for (auto it = active.beginOn(); it; ++it) group[it.pos()] = int16_t(it.pos());
-    for (auto it = active.beginOn(); it; ++it) {
-        const int offset = int(it.pos());
-        const openvdb::Coord p = position(offset);
-        for (int s = 0; s < 9; ++s) {
-            const openvdb::Coord q = p.offsetBy(forward[s][0], forward[s][1], forward[s][2]);
-            if (q[0] >= leaf_dim || q[1] < 0 || q[1] >= leaf_dim || q[2] < 0 || q[2] >= leaf_dim) continue;
-            const int neighbour = (q[0] << 6) | (q[1] << 3) | q[2];
-            if (!active.isOn(neighbour) ||
-                double(values[offset]) + double(values[neighbour]) <= link_length[s] * (1.0 + 1e-3))
-                continue;
-            const int a = root(offset), b = root(neighbour);
-            if (a != b) group[b] = int16_t(a);
-        }
-    }
-    // Per group root: its farthest voxel and, for a large group, the farthest
-    // of its voxels at least 4 voxels away from that one.
-    constexpr int large_group = 32, apart_squared = 16;
-    int16_t farthest[leaf_size], second[leaf_size], size[leaf_size] = {};
-    for (auto it = active.beginOn(); it; ++it) {
-        const int r = root(int(it.pos()));
-        if (size[r]++ == 0 || values[it.pos()] > values[farthest[r]]) farthest[r] = int16_t(it.pos());
-        second[r] = -1;
-    }
-    for (auto it = active.beginOn(); it; ++it) {
-        const int r = root(int(it.pos()));
-        if (size[r] < large_group) continue;
-        const openvdb::Coord d = position(int(it.pos())) - position(farthest[r]);
-        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < apart_squared) continue;
-        if (second[r] < 0 || values[it.pos()] > values[second[r]]) second[r] = int16_t(it.pos());
-    }
-    const auto evaluate = [&](int offset) {
-        return float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
-    };
-    float group_w[leaf_size];
-    bool per_voxel[leaf_size];
-    for (auto it = active.beginOn(); it; ++it) {
-        const int offset = int(it.pos());
-        if (root(offset) != offset) continue;
-        group_w[offset] = evaluate(farthest[offset]);
-        per_voxel[offset] = second[offset] >= 0 && (evaluate(second[offset]) >= inside_threshold) !=
-                                                       (group_w[offset] >= inside_threshold);
-    }
-    for (auto it = active.beginOn(); it; ++it) {
-        const int r = root(int(it.pos()));
-        w[it.pos()] = per_voxel[r] ? evaluate(int(it.pos())) : group_w[r];
-    }
-}
+// Past this gradient bound no group of two voxels or more can be given one
+// side (leaf_winding.h), so the bound need not be summed further.
+double gradient_cap(double voxel) { return 0.5 / voxel; }
 
 // A signed narrow band is a distance field of its zero surface only if every
 // sign change between face neighbours is a crossing (|a| + |b| <= ~h) and
@@ -220,24 +153,11 @@ bool band_is_consistent(const openvdb::FloatGrid& grid, double voxel, bool close
     return consistent;
 }
 
-// Distance-like value of a voxel off the band from the winding numbers of its
-// leaf: (1/2 - w) / |grad w|, clamped to the band.
-float value_from_winding(const float* w, int offset, double voxel, float background) {
-    const int x = offset >> 6, y = (offset >> 3) & 7, z = offset & 7;
-    const int coordinate[3] = {x, y, z}, stride[3] = {64, 8, 1};
-    double gradient_squared = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const int lo = coordinate[axis] > 0 ? -1 : 0, hi = coordinate[axis] < leaf_dim - 1 ? 1 : 0;
-        const double g = (w[offset + hi * stride[axis]] - w[offset + lo * stride[axis]]) / ((hi - lo) * voxel);
-        gradient_squared += g * g;
-    }
-    const double value = (inside_threshold - w[offset]) / std::max(std::sqrt(gradient_squared), 1e-12);
-    return float(std::clamp(value, -double(background), double(background)));
-}
-
 // The off-band part of the field for inputs whose band is not consistent.
 void add_off_band_winding(openvdb::FloatGrid& grid, const WindingNumber& winding, const BoundingBox& box,
-                          std::vector<float>& band_winding, Progress& progress) {
+                          const WindingGradientBound& gradient, std::vector<float>& band_winding,
+                          const std::vector<double>& leaf_gradient, const std::vector<char>& band_exact,
+                          Progress& progress) {
     const openvdb::math::Transform& transform = grid.transform();
     const double voxel = transform.voxelSize()[0];
     const float background = grid.background();
@@ -248,12 +168,8 @@ void add_off_band_winding(openvdb::FloatGrid& grid, const WindingNumber& winding
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(tree);
         progress.stage("winding number off band");
         for_each_index(leaves.leafCount(), progress, [&](size_t i) {
-            FloatLeaf& leaf = leaves.leaf(i);
-            float* w = &band_winding[i * leaf_size];
-            for (int offset = 0; offset < leaf_size; ++offset)
-                if (!leaf.isValueOn(offset)) w[offset] = float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
-            for (int offset = 0; offset < leaf_size; ++offset)
-                if (!leaf.isValueOn(offset)) leaf.setValueOn(offset, value_from_winding(w, offset, voxel, background));
+            off_band_leaf_values(leaves.leaf(i), winding, transform, leaf_gradient[i], background, band_exact[i] != 0,
+                                 &band_winding[i * leaf_size]);
         });
     }
 
@@ -299,8 +215,8 @@ void add_off_band_winding(openvdb::FloatGrid& grid, const WindingNumber& winding
             w_min = std::min(w_min, w);
             w_max = std::max(w_max, w);
         }
-        if (w_min > inside_threshold + 0.1) kind[b] = Block::inside;
-        else if (w_max >= inside_threshold - 0.1) kind[b] = Block::mixed;
+        if (w_min > inside_winding + 0.1) kind[b] = Block::inside;
+        else if (w_max >= inside_winding - 0.1) kind[b] = Block::mixed;
     });
 
     std::vector<FloatLeaf*> mixed_leaves;
@@ -312,10 +228,8 @@ void add_off_band_winding(openvdb::FloatGrid& grid, const WindingNumber& winding
     for_each_index(mixed_leaves.size(), progress, [&](size_t i) {
         FloatLeaf& leaf = *mixed_leaves[i];
         float w[leaf_size];
-        for (int offset = 0; offset < leaf_size; ++offset)
-            w[offset] = float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
-        for (int offset = 0; offset < leaf_size; ++offset)
-            leaf.setValueOn(offset, value_from_winding(w, offset, voxel, background));
+        off_band_leaf_values(leaf, winding, transform, gradient(leaf_box(leaf, transform), gradient_cap(voxel)),
+                             background, true, w);
     });
 }
 
@@ -343,6 +257,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
 
     progress.stage("winding number tree");
     const auto winding = std::make_unique<WindingNumber>(mesh);
+    const WindingGradientBound gradient_bound(mesh);
     clock.lap("winding number tree");
     // What encloses nothing is told apart before any voxel is built.
     progress.stage("enclosed share");
@@ -367,25 +282,28 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         clock.lap("distance");
     }
 
-    std::vector<float> band_winding;
+    std::vector<float> band_winding;    // per band leaf, w at its voxels
+    std::vector<double> leaf_gradient;  // per band leaf, the bound on |grad w| over it
+    std::vector<char> band_exact;       // per band leaf, whether every w was taken at its voxel
     std::atomic<uint64_t> clearly_inside_voxels{0};
     const bool closed = is_closed_cycle(mesh);
     if (encloses) {
         progress.stage("winding number");
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
         band_winding.assign(leaves.leafCount() * size_t(leaf_size), 0.0f);
+        leaf_gradient.assign(leaves.leafCount(), 0.0);
+        band_exact.assign(leaves.leafCount(), 0);
         const float smallest_distance = float(1e-6 * voxel);
         for_each_index(leaves.leafCount(), progress, [&](size_t i) {
             uint64_t inside = 0;
             float* leaf_winding = &band_winding[i * leaf_size];
-            if (closed) closed_cycle_leaf_winding(leaves.leaf(i), *winding, *transform, leaf_winding);
+            leaf_gradient[i] = gradient_bound(leaf_box(leaves.leaf(i), *transform), gradient_cap(voxel));
+            band_exact[i] = band_leaf_winding(leaves.leaf(i), *winding, *transform, leaf_gradient[i], leaf_winding);
             for (auto voxel_it = leaves.leaf(i).beginValueOn(); voxel_it; ++voxel_it) {
-                if (!closed)
-                    leaf_winding[voxel_it.pos()] = float((*winding)(world_position(*transform, voxel_it.getCoord())));
                 const double w = leaf_winding[voxel_it.pos()];
                 // Inside values are strictly negative, also on a triangle
                 // (-0.0 would read as outside in every sign test).
-                if (w >= inside_threshold) voxel_it.setValue(-std::max(*voxel_it, smallest_distance));
+                if (w >= inside_winding) voxel_it.setValue(-std::max(*voxel_it, smallest_distance));
                 if (w >= clearly_inside) ++inside;
             }
             clearly_inside_voxels += inside;
@@ -419,7 +337,8 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         if (closed)
             openvdb::tools::signedFloodFill(grid->tree());
         else
-            add_off_band_winding(*grid, *winding, bounding_box(mesh), band_winding, progress);
+            add_off_band_winding(*grid, *winding, bounding_box(mesh), gradient_bound, band_winding, leaf_gradient,
+                                 band_exact, progress);
         band_winding = {};
         progress.stage("rebuild");
         grid = rebuild_band(*grid, 0.0, options.half_band_voxels, progress);
