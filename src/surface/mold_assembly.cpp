@@ -209,8 +209,8 @@ MoldPair assemble_in_frame(const Mesh& local, const std::vector<std::vector<Vec3
 // a millionth of the block's volume is no mold material anyone can print.
 void round_pieces_to_float(MoldPair& pair) {
     const double crumb = 1e-6 * pair.block_size[0] * pair.block_size[1] * pair.block_size[2];
-    volume::drop_small_mesh_shells(pair.top, crumb);
-    volume::drop_small_mesh_shells(pair.bottom, crumb);
+    volume::drop_small_or_flat_shells(pair.top, crumb);
+    volume::drop_small_or_flat_shells(pair.bottom, crumb);
     pair.top = round_to_float(pair.top, "the top mold piece");
     pair.bottom = round_to_float(pair.bottom, "the bottom mold piece");
 }

@@ -45,20 +45,13 @@ bool has_degenerate_triangle(const Mesh& mesh) {
 //! complement), whose volume is negative.
 bool bounds_volume(const Mesh& mesh) {
     if (signed_volume(mesh) <= 0.0) return false;
-    // A flat shell (a sliver tetrahedron) bounds no volume worth the name: its
-    // mean thickness, 2 |V| / A, is under 1e-4 of the mesh's size (0.01 mm on
-    // a 100 mm part), too thin to print, and under 1% of its own size (a
-    // sheet, not a crumb), so a ray test cannot tell its inside.
+    // A flat mesh or shell (a sliver tetrahedron) bounds no volume worth the
+    // name (mesh_shells.h).
     const double diagonal = bounding_box(mesh).diagonal();
     if (2.0 * signed_volume(mesh) < 1e-4 * diagonal * surface_area(mesh)) return false;
     const std::vector<MeshShell> shells = split_shells(mesh);
-    for (const MeshShell& shell : shells) {
-        double area = 0.0;
-        for (uint32_t t : shell.triangles) area += triangle_area(mesh, mesh.triangles[t]);
-        const double thickness = 2.0 * std::abs(shell.volume) / area;
-        if (thickness < 1e-4 * diagonal && thickness < 0.01 * bounding_box(sub_mesh(mesh, shell.triangles)).diagonal())
-            return false;
-    }
+    for (const MeshShell& shell : shells)
+        if (is_flat_shell(mesh, shell, diagonal)) return false;
     if (shells.size() == 1) return true;
     // Only the vertices triangles use: CGAL's volume test fails on isolated ones.
     SurfaceMesh surface;

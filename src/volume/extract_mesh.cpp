@@ -43,8 +43,9 @@ Mesh extract_mesh(const openvdb::FloatGrid& grid, double adaptivity, Progress& p
     }
     part_coincident_vertices(mesh);
     // Shells under an eighth of a voxel in volume are sign noise of a few
-    // voxels, no feature the grid can hold: crumbs and flat slivers.
-    const MeshShellCounts noise = drop_small_mesh_shells(mesh, std::pow(0.5 * grid.voxelSize()[0], 3));
+    // voxels, no feature the grid can hold: crumbs; flat shells are slivers
+    // that a writer would refuse (mesh_shells.h).
+    const MeshShellCounts noise = drop_small_or_flat_shells(mesh, std::pow(0.5 * grid.voxelSize()[0], 3));
     if (shells_dropped) *shells_dropped = noise.dropped;
     progress.update(1.0);
     return mesh;

@@ -5,8 +5,8 @@
 //! shorter diagonal, triangles oriented outward, vertices shared, no two
 //! at one position (where sheets touch at a point, each copy is moved 1% of
 //! the way toward the centre of its ring, into its own sheet), and without
-//! shells, solid or void, under an eighth of a voxel³ in volume (sign noise:
-//! crumbs and flat slivers). An empty level set gives an empty mesh. Checks
+//! shells, solid or void, under an eighth of a voxel³ in volume or flat
+//! (mesh_shells.h; sign noise: crumbs and slivers). An empty level set gives an empty mesh. Checks
 //! cancellation between stages.
 #pragma once
 

@@ -1,6 +1,7 @@
 //! Shells of a mesh (see mesh_shells.h).
 #include "volume/mesh_shells.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -62,11 +63,27 @@ Mesh sub_mesh(const Mesh& mesh, const std::vector<uint32_t>& triangles) {
     return out;
 }
 
-MeshShellCounts drop_small_mesh_shells(Mesh& mesh, double min_volume) {
+bool is_flat_shell(const Mesh& mesh, const MeshShell& shell, double diagonal) {
+    double area = 0.0;
+    BoundingBox box{mesh.vertices[mesh.triangles[shell.triangles[0]][0]], mesh.vertices[mesh.triangles[shell.triangles[0]][0]]};
+    for (uint32_t t : shell.triangles) {
+        area += triangle_area(mesh, mesh.triangles[t]);
+        for (uint32_t v : mesh.triangles[t])
+            for (int k = 0; k < 3; ++k) {
+                box.min[k] = std::min(box.min[k], mesh.vertices[v][k]);
+                box.max[k] = std::max(box.max[k], mesh.vertices[v][k]);
+            }
+    }
+    const double thickness = 2.0 * std::abs(shell.volume) / area;
+    return thickness < 1e-4 * diagonal && thickness < 0.01 * box.diagonal();
+}
+
+MeshShellCounts drop_small_or_flat_shells(Mesh& mesh, double min_volume) {
     MeshShellCounts counts;
     std::vector<uint32_t> kept;
+    const double diagonal = bounding_box(mesh).diagonal();
     for (const MeshShell& shell : split_shells(mesh)) {
-        if (std::abs(shell.volume) < min_volume) {
+        if (std::abs(shell.volume) < min_volume || is_flat_shell(mesh, shell, diagonal)) {
             ++counts.dropped;
             continue;
         }

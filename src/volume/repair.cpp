@@ -111,7 +111,7 @@ RepairResult repair_in_frame(const Mesh& mesh, const RepairOptions& options, con
     // Surface shells under a voxel's volume are specks of the extraction
     // (a voxel barely below zero), not pieces of the solid: always dropped.
     const double voxel = result.grid->voxelSize()[0];
-    const MeshShellCounts surface_shells = drop_small_mesh_shells(result.mesh, voxel * voxel * voxel);
+    const MeshShellCounts surface_shells = drop_small_or_flat_shells(result.mesh, voxel * voxel * voxel);
     clock.lap("shells");
     result.shells_dropped += specks + surface_shells.dropped;
     if (count_on_surface) result.shells_kept = surface_shells.kept;

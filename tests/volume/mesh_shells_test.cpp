@@ -1,7 +1,8 @@
 // Shells of a mesh: components of triangles sharing vertex indices, numbered
 // by their first triangle, with signed volumes by hand; sub_mesh keeps only
 // the vertices used; dropping small shells removes solids and voids under the
-// threshold in magnitude and leaves the mesh as it is when none is.
+// threshold in magnitude, and flat sheets, and leaves the mesh as it is when
+// none is.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -95,14 +96,14 @@ TEST(SubMesh, KeepsOnlyTheUsedVerticesInOrderOfUse) {
     EXPECT_TRUE(none.triangles.empty());
 }
 
-TEST(DropSmallMeshShells, SolidsAndVoidsUnderTheThresholdGo) {
+TEST(DropSmallOrFlatShells, SolidsAndVoidsUnderTheThresholdGo) {
     // A 4 x 4 x 4 solid (64) with a 2 x 2 x 2 void (-8) and a 0.5³ void
     // (-0.125) inside, and a separate 0.5 x 0.5 x 1 solid (0.25).
     Mesh mesh = merged(make_box({0, 0, 0}, {4, 4, 4}), flipped(make_box({1, 1, 1}, {3, 3, 3})));
     mesh = merged(mesh, flipped(make_box({3.25, 3.25, 3.25}, {3.75, 3.75, 3.75})));
     mesh = merged(mesh, make_box({10, 0, 0}, {10.5, 0.5, 1}));
     Mesh dropped = mesh;
-    const auto counts = fabvdb::volume::drop_small_mesh_shells(dropped, 0.5);
+    const auto counts = fabvdb::volume::drop_small_or_flat_shells(dropped, 0.5);
     EXPECT_EQ(counts.kept, 2u);
     EXPECT_EQ(counts.dropped, 2u);
     EXPECT_EQ(dropped.triangles.size(), 24u);
@@ -114,44 +115,67 @@ TEST(DropSmallMeshShells, SolidsAndVoidsUnderTheThresholdGo) {
             EXPECT_EQ(dropped.vertices[dropped.triangles[t][k]], mesh.vertices[mesh.triangles[t][k]]);
 }
 
-TEST(DropSmallMeshShells, MagnitudeAgainstTheThreshold) {
+TEST(DropSmallOrFlatShells, MagnitudeAgainstTheThreshold) {
     // Unit boxes, one facing out (+1) and one in (-1): both just above 0.999,
     // both just under 1.001.
     const Mesh pair = merged(make_box({0, 0, 0}, {1, 1, 1}), flipped(make_box({3, 0, 0}, {4, 1, 1})));
     Mesh mesh = pair;
-    auto counts = fabvdb::volume::drop_small_mesh_shells(mesh, 0.999);
+    auto counts = fabvdb::volume::drop_small_or_flat_shells(mesh, 0.999);
     EXPECT_EQ(counts.kept, 2u);
     EXPECT_EQ(counts.dropped, 0u);
     EXPECT_EQ(mesh.triangles.size(), 24u);
-    counts = fabvdb::volume::drop_small_mesh_shells(mesh, 1.001);
+    counts = fabvdb::volume::drop_small_or_flat_shells(mesh, 1.001);
     EXPECT_EQ(counts.kept, 0u);
     EXPECT_EQ(counts.dropped, 2u);
     EXPECT_TRUE(mesh.triangles.empty());
     // A threshold of 0 keeps everything.
     mesh = pair;
-    counts = fabvdb::volume::drop_small_mesh_shells(mesh, 0.0);
+    counts = fabvdb::volume::drop_small_or_flat_shells(mesh, 0.0);
     EXPECT_EQ(counts.kept, 2u);
     EXPECT_EQ(counts.dropped, 0u);
 }
 
-TEST(DropSmallMeshShells, NothingDroppedLeavesTheMeshAsItIs) {
+TEST(DropSmallOrFlatShells, NothingDroppedLeavesTheMeshAsItIs) {
     Mesh mesh = make_box({0, 0, 0}, {2, 2, 2});
     mesh.vertices.push_back({100, 100, 100});  // unused: sub_mesh would drop it
     const Mesh before = mesh;
-    const auto counts = fabvdb::volume::drop_small_mesh_shells(mesh, 1.0);
+    const auto counts = fabvdb::volume::drop_small_or_flat_shells(mesh, 1.0);
     EXPECT_EQ(counts.kept, 1u);
     EXPECT_EQ(counts.dropped, 0u);
     EXPECT_EQ(mesh.vertices, before.vertices);
     EXPECT_EQ(mesh.triangles, before.triangles);
 }
 
-TEST(DropSmallMeshShells, EverythingCanGo) {
+TEST(DropSmallOrFlatShells, EverythingCanGo) {
     Mesh mesh = merged(make_box({0, 0, 0}, {1, 1, 1}), make_box({2, 0, 0}, {3, 1, 1}));
-    const auto counts = fabvdb::volume::drop_small_mesh_shells(mesh, 10.0);
+    const auto counts = fabvdb::volume::drop_small_or_flat_shells(mesh, 10.0);
     EXPECT_EQ(counts.kept, 0u);
     EXPECT_EQ(counts.dropped, 2u);
     EXPECT_TRUE(mesh.triangles.empty());
     EXPECT_TRUE(mesh.vertices.empty());
+}
+
+TEST(DropSmallOrFlatShells, FlatSheetsGoCrumbsAndSlabsStay) {
+    // Beside a 100 mm box (diagonal 173 mm, so flat is under 0.0173 mm thick):
+    // a 5 x 5 x 0.005 mm sheet (2V/A about 0.005 mm) is flat; a 5 x 5 x 0.05
+    // mm slab is not; a 0.001 mm cube is thinner still but no sheet (its
+    // thickness is not under 1% of its own size).
+    const Mesh box = make_box({0, 0, 0}, {100, 100, 100});
+    const Mesh sheet = make_box({120, 0, 0}, {125, 5, 0.005});
+    const Mesh slab = make_box({130, 0, 0}, {135, 5, 0.05});
+    const Mesh crumb = make_box({140, 0, 0}, {140.001, 0.001, 0.001});
+    Mesh mesh = merged(merged(box, sheet), merged(slab, crumb));
+    const double diagonal = fabvdb::bounding_box(mesh).diagonal();
+    const auto shells = split_shells(mesh);
+    ASSERT_EQ(shells.size(), 4u);
+    EXPECT_FALSE(fabvdb::volume::is_flat_shell(mesh, shells[0], diagonal));
+    EXPECT_TRUE(fabvdb::volume::is_flat_shell(mesh, shells[1], diagonal));
+    EXPECT_FALSE(fabvdb::volume::is_flat_shell(mesh, shells[2], diagonal));
+    EXPECT_FALSE(fabvdb::volume::is_flat_shell(mesh, shells[3], diagonal));
+    const auto counts = fabvdb::volume::drop_small_or_flat_shells(mesh, 0.0);
+    EXPECT_EQ(counts.kept, 3u);
+    EXPECT_EQ(counts.dropped, 1u);
+    EXPECT_NEAR(fabvdb::test::mesh_volume(mesh), 1e6 + 5 * 5 * 0.05 + 1e-9, 1e-6);
 }
 
 }  // namespace
