@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include <openvdb/tools/Dense.h>
 
 #include "volume/column_runs.h"
+#include "volume/mesh_shells.h"
 
 namespace fabvdb::volume {
 
@@ -163,7 +165,11 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
         }
     }
     progress.check();
-    return any_inside ? mesh : Mesh{};
+    if (!any_inside) return Mesh{};
+    // Islands of a few thin columns are sign noise: crumbs under an eighth of
+    // a voxel³ and flat shells, which no writer accepts, go.
+    drop_small_or_flat_shells(mesh, std::pow(0.5 * swept.voxelSize()[0], 3));
+    return mesh;
 }
 
 }  // namespace fabvdb::volume

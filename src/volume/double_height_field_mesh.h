@@ -10,7 +10,8 @@
 //! is fanned from an inside column and lifted twice, to the column tops
 //! (facing +d) and to the column bottoms (facing −d), the two sheets sharing
 //! the contour vertices. The result is closed, 2-manifold, outward, without
-//! faces parallel to d, and in world coordinates. Cancellable.
+//! faces parallel to d, without shells under an eighth of a voxel³ or flat
+//! (mesh_shells.h), and in world coordinates. Cancellable.
 #pragma once
 
 #include <openvdb/openvdb.h>
@@ -23,7 +24,7 @@ namespace fabvdb::volume {
 //! `swept`: a level set on a linear transform (sweep_double_height_field's
 //! result). `kept_surface`: a level set whose zero crossings a column's kept
 //! run should hold (the input surface; nullptr: the longest run). An empty
-//! mesh when no column is inside (the part vanished).
+//! mesh when no column is inside or only noise is (the part vanished).
 Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progress,
                               const openvdb::FloatGrid* kept_surface = nullptr);
 

@@ -1,7 +1,7 @@
 // The surface of a swept level set as an exact double height field: a ring
 // standing on its side swept along tilted directions, and the same ring with
 // a keep-out block carved from the middle of its columns (two inside runs per
-// column). Checked by edge pairing, CGAL's self-intersection test and the
+// column); a column barely inside is noise and makes no shell. Checked by edge pairing, CGAL's self-intersection test and the
 // test support's own ray casting, not by anything the mesher computed.
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 #include "volume/double_height_field_mesh.h"
+#include "volume/mesh_shells.h"
 #include "volume/sweep.h"
 
 namespace {
@@ -121,4 +122,33 @@ TEST(DoubleHeightFieldMeshErrors, EmptyGridGivesNoMeshAndCancelIsHonoured) {
     }
 }
 
+// One column barely inside (0.01 mm deep at 0.5 mm voxels) among outside
+// neighbours would give a crumb far under an eighth of a voxel³: dropped,
+// alone (the part vanished) or beside a ring.
+void add_speck(openvdb::FloatGrid& grid, const openvdb::Coord& at) {
+    for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dz = -1; dz <= 1; ++dz) grid.tree().setValueOn(at.offsetBy(dx, dy, dz), 0.5f);
+    grid.tree().setValueOn(at, -0.01f);
+}
+
+TEST(DoubleHeightFieldMeshNoise, ASpeckColumnMakesNoShell) {
+    openvdb::initialize();
+    fabvdb::Progress progress;
+    openvdb::FloatGrid speck(1.0f);
+    speck.setTransform(openvdb::math::Transform::createLinearTransform(0.5));
+    add_speck(speck, openvdb::Coord(0, 0, 0));
+    EXPECT_TRUE(fabvdb::volume::double_height_field_mesh(speck, progress).triangles.empty());
+
+    const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
+    auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.5), {0, 0, 1}, {}, {}, progress);
+    const Mesh alone = fabvdb::volume::double_height_field_mesh(*swept, progress);
+    add_speck(*swept, openvdb::Coord(60, 60, 0));
+    const Mesh with_speck = fabvdb::volume::double_height_field_mesh(*swept, progress);
+    EXPECT_EQ(fabvdb::volume::split_shells(with_speck).size(), 1u);
+    EXPECT_EQ(with_speck.triangles.size(), alone.triangles.size());
+    expect_exact_double_height_field(with_speck, {0, 0, 1});
+}
+
 }  // namespace
+
