@@ -21,6 +21,12 @@ Mesh make_box(const Vec3& lo, const Vec3& hi) {
     return mesh;
 }
 
+Mesh make_open_box(const Vec3& lo, const Vec3& hi) {
+    Mesh box = make_box(lo, hi);
+    box.triangles.erase(box.triangles.begin() + 2, box.triangles.begin() + 4);  // the quad {4, 5, 7, 6}
+    return box;
+}
+
 Mesh make_sphere(const Vec3& center, double radius, int levels) {
     Mesh mesh = unit_icosphere(levels);
     for (Vec3& p : mesh.vertices)

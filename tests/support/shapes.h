@@ -12,6 +12,8 @@ namespace fabvdb::test {
 
 //! Axis-aligned box from `lo` to `hi`: 8 vertices, 12 triangles.
 Mesh make_box(const Vec3& lo, const Vec3& hi);
+//! The same box without its top face (z = hi[2]): 8 vertices, 10 triangles.
+Mesh make_open_box(const Vec3& lo, const Vec3& hi);
 //! Sphere of `radius` at `center`: an icosahedron subdivided `levels` times,
 //! projected on the sphere (20·4^levels triangles). Its volume is a little
 //! under 4/3·π·r³: use mesh_volume() for the exact figure.

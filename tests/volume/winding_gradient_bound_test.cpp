@@ -22,15 +22,7 @@ BoundingBox cube_at(const Vec3& c, double half) {
     return {{c[0] - half, c[1] - half, c[2] - half}, {c[0] + half, c[1] + half, c[2] + half}};
 }
 
-Mesh open_box() {
-    const Mesh box = fabvdb::test::make_box({0, 0, 0}, {10, 10, 10});
-    Mesh open;
-    open.vertices = box.vertices;
-    for (const auto& t : box.triangles)
-        if (!(box.vertices[t[0]][2] == 10.0 && box.vertices[t[1]][2] == 10.0 && box.vertices[t[2]][2] == 10.0))
-            open.triangles.push_back(t);
-    return open;
-}
+Mesh open_box() { return fabvdb::test::make_open_box({0, 0, 0}, {10, 10, 10}); }
 
 TEST(WindingGradientBound, ClosedShellsHaveNoBoundary) {
     const Mesh shells = fabvdb::test::merged(fabvdb::test::make_sphere({0, 0, 0}, 5.0, 3),
