@@ -141,11 +141,12 @@ bool band_leaf_winding(const FloatLeaf& leaf, const WindingNumber& winding, cons
         group_w[offset] = evaluate(farthest[offset]);
         per_voxel[offset] = false;
         if (size[offset] == 1) continue;
-        const double reach =
-            gradient_bound > 0.0 ? gradient_bound * std::sqrt(2.0) * voxel * groups.depth(farthest[offset], linked) : 0.0;
-        per_voxel[offset] =
-            std::abs(group_w[offset] - inside_winding) <= margin + reach ||
-            (second[offset] >= 0 && (evaluate(second[offset]) >= inside_winding) != (group_w[offset] >= inside_winding));
+        const double reach = gradient_bound > 0.0
+                                 ? gradient_bound * std::sqrt(2.0) * voxel * groups.depth(farthest[offset], linked)
+                                 : 0.0;
+        const bool inside = group_w[offset] >= inside_winding;
+        per_voxel[offset] = std::abs(group_w[offset] - inside_winding) <= margin + reach ||
+                            (second[offset] >= 0 && (evaluate(second[offset]) >= inside_winding) != inside);
         exact = exact && per_voxel[offset];
     }
     for (auto it = active.beginOn(); it; ++it) {

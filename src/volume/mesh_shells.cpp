@@ -65,7 +65,8 @@ Mesh sub_mesh(const Mesh& mesh, const std::vector<uint32_t>& triangles) {
 
 bool is_flat_shell(const Mesh& mesh, const MeshShell& shell, double diagonal) {
     double area = 0.0;
-    BoundingBox box{mesh.vertices[mesh.triangles[shell.triangles[0]][0]], mesh.vertices[mesh.triangles[shell.triangles[0]][0]]};
+    const Vec3& first = mesh.vertices[mesh.triangles[shell.triangles[0]][0]];
+    BoundingBox box{first, first};
     for (uint32_t t : shell.triangles) {
         area += triangle_area(mesh, mesh.triangles[t]);
         for (uint32_t v : mesh.triangles[t])

@@ -34,12 +34,12 @@
 #include "core/stage_clock.h"
 #include "volume/closed_cycle.h"
 #include "volume/enclosed_share.h"
+#include "volume/leaf_winding.h"
 #include "volume/memory_estimate.h"
 #include "volume/orient_soup.h"
 #include "volume/progress_interrupter.h"
 #include "volume/rebuild_band.h"
 #include "volume/unsigned_band.h"
-#include "volume/leaf_winding.h"
 #include "volume/winding_gradient_bound.h"
 #include "volume/winding_number.h"
 
