@@ -324,23 +324,15 @@ json validity(const Mesh& mesh, std::vector<uint32_t>& labels, std::vector<int>&
                 const Vec3 n = cross(sub(mesh.vertices[t[1]], mesh.vertices[t[0]]),
                                      sub(mesh.vertices[t[2]], mesh.vertices[t[0]]));
                 const double length = norm(n);
-                // Points this far in front of and behind the centroid; a shell
-                // thinner than that (a fin) is probed again ten and a hundred
-                // times closer.
-                int vote = 0;
-                double eps = std::min(1e-4 * box.diagonal(), 0.05 * std::sqrt(list[j].first));
-                for (int tries = 0; vote == 0 && tries < 3; ++tries, eps *= 0.1) {
-                    Vec3 front, back;
-                    for (int k = 0; k < 3; ++k) {
-                        const double c =
-                            (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3;
-                        front[k] = c + eps * n[k] / length;
-                        back[k] = c - eps * n[k] / length;
-                    }
-                    const bool in_front = caster.inside(front), in_back = caster.inside(back);
-                    vote = (!in_front && in_back) ? 1 : (in_front && !in_back) ? -1 : 0;
+                const double eps = std::min(1e-4 * box.diagonal(), 0.05 * std::sqrt(list[j].first));
+                Vec3 front, back;
+                for (int k = 0; k < 3; ++k) {
+                    const double c = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3;
+                    front[k] = c + eps * n[k] / length;
+                    back[k] = c - eps * n[k] / length;
                 }
-                votes += vote;
+                const bool in_front = caster.inside(front), in_back = caster.inside(back);
+                votes += (!in_front && in_back) ? 1 : (in_front && !in_back) ? -1 : 0;
             }
             shell_sign[s] = votes > 0 ? 1 : votes < 0 ? -1 : 0;
             inward += votes < 0;
