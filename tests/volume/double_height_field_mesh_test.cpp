@@ -1,8 +1,9 @@
 // The surface of a swept level set as an exact double height field: a ring
 // standing on its side swept along tilted directions, and the same ring with
 // a keep-out block carved from the middle of its columns (two inside runs per
-// column); a column barely inside is noise and makes no shell. Checked by edge pairing, CGAL's self-intersection test and the
-// test support's own ray casting, not by anything the mesher computed.
+// column); a column barely inside is noise and makes no shell. Checked by
+// edge pairing, CGAL's self-intersection test and the test support's own ray
+// casting, not by anything the mesher computed.
 #include <gtest/gtest.h>
 
 #include <cmath>
