@@ -7,8 +7,8 @@
 #include "core/error.h"
 #include "core/stage_clock.h"
 #include "surface/float_rounding.h"
+#include "surface/input_to_parts_distance.h"
 #include "surface/overhang_deformation.h"
-#include "surface/surface_distance.h"
 #include "volume/detail_restoration.h"
 #include "volume/double_height_field_mesh.h"
 #include "volume/hand_over_runs.h"
@@ -17,49 +17,6 @@
 #include "volume/sweep.h"
 
 namespace fabvdb::surface {
-
-namespace {
-
-Mesh merged(const std::vector<CastPart>& parts, std::vector<size_t>& part_of_triangle) {
-    Mesh all;
-    for (size_t p = 0; p < parts.size(); ++p) {
-        append(all, parts[p].part);
-        part_of_triangle.insert(part_of_triangle.end(), parts[p].part.triangles.size(), p);
-    }
-    return all;
-}
-
-//! Distances from the input's vertices to the nearest part surface, overall
-//! and per part (the part each vertex is nearest to).
-void measure_distances(const Mesh& input, MoldGeneration& result, Progress& progress) {
-    progress.stage("mold: distance to the input");
-    std::vector<size_t> part_of_triangle;
-    const SurfaceDistance parts(merged(result.parts, part_of_triangle));
-    std::vector<double> sum(result.parts.size(), 0.0);
-    std::vector<size_t> count(result.parts.size(), 0);
-    std::vector<char> used(input.vertices.size(), 0);
-    for (const Triangle& t : input.triangles)
-        for (uint32_t v : t) used[v] = 1;
-    double total = 0;
-    size_t samples = 0;
-    for (size_t v = 0; v < input.vertices.size(); ++v) {
-        if (!used[v]) continue;
-        const SurfaceDistance::Nearest nearest = parts.nearest(input.vertices[v]);
-        const size_t p = part_of_triangle[nearest.triangle];
-        sum[p] += nearest.distance;
-        ++count[p];
-        result.parts[p].max_distance = std::max(result.parts[p].max_distance, nearest.distance);
-        result.max_distance = std::max(result.max_distance, nearest.distance);
-        total += nearest.distance;
-        ++samples;
-        if (samples % 4096 == 0) progress.update(double(v) / double(input.vertices.size()));
-    }
-    result.mean_distance = samples ? total / double(samples) : 0.0;
-    for (size_t p = 0; p < result.parts.size(); ++p)
-        result.parts[p].mean_distance = count[p] ? sum[p] / double(count[p]) : 0.0;
-}
-
-}  // namespace
 
 MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, const MoldGenerationOptions& options,
                               Progress& progress) {
@@ -208,7 +165,15 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         cast.added_volume = cast.volume - cast.restored_volume - cast.deformed_volume_change -
                             cast.received_volume + cast.given_volume;
     }
-    measure_distances(input, result, progress);
+    std::vector<const Mesh*> cast_parts;
+    for (const CastPart& cast : result.parts) cast_parts.push_back(&cast.part);
+    const InputToParts fidelity = input_to_parts_distance(input, cast_parts, result.voxel_size, progress);
+    result.max_distance = fidelity.max;
+    result.mean_distance = fidelity.mean;
+    for (size_t p = 0; p < result.parts.size(); ++p) {
+        result.parts[p].max_distance = fidelity.part_max[p];
+        result.parts[p].mean_distance = fidelity.part_mean[p];
+    }
     clock.lap("distance to the input");
     return result;
 }

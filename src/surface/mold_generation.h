@@ -18,7 +18,8 @@
 //!  4. the parts rounded to float coordinates, as STL files store them,
 //!     without crossing triangles (float_rounding.h; the mold pieces are too).
 //! Measures what each part added and how closely the parts reproduce the
-//! input (distance from the input's vertices to the nearest part surface).
+//! input (distance from the input surface, sampled every voxel, to the
+//! nearest part surface).
 //! Cancellable between and inside stages; a cancelled run returns nothing.
 #pragma once
 
@@ -72,7 +73,7 @@ struct CastPart {
     double added_volume = 0;      //!< volume − restored − deformed change − received + given: what the sweep added
     double removed_by_keep_out = 0;  //!< mm³ the sweep would have added inside other parts
     size_t columns_trimmed = 0;   //!< columns the sweep trimmed instead of filling (trim_deep_fills.h)
-    double mean_distance = 0;     //!< mm, from the input vertices nearest to this part
+    double mean_distance = 0;     //!< mm, area-weighted, from the input surface nearest to this part
     double max_distance = 0;
 };
 
