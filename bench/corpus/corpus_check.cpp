@@ -23,7 +23,9 @@
 //       the input diagonal; leaving out input surface that the input's own
 //       solid encloses on both sides (generalized winding number ≥ ½: a
 //       shell inside another), whose figures over all of it are under
-//       all_surface.
+//       all_surface; max_part: the part nearest to the farthest point, and
+//       max_side: "buried" when that point lies inside the parts (a cast
+//       part holds more than the input there), else "uncovered".
 //   corpus_check decomposition D.json
 //       tests/support's decomposition checks (ownership, pieces, energies).
 //
@@ -42,6 +44,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <random>
 #include <sstream>
@@ -551,17 +554,17 @@ json check_input(int argc, char** argv) {
 json check_cover(int argc, char** argv) {
     const Mesh input = read_input(argv[2], std::stod(option(argc, argv, "--fit", "0")));
     std::vector<Triangle3> parts;
-    size_t count = 0;
+    std::vector<Mesh> part_meshes;
     for (int i = 3; i < argc; ++i) {
         if (std::string(argv[i]) == "--fit") {
             ++i;
             continue;
         }
-        const Mesh part = read_stl_as_stored(argv[i]);
-        const auto t = triangles_of(part, all_triangles(part));
+        part_meshes.push_back(read_stl_as_stored(argv[i]));
+        const auto t = triangles_of(part_meshes.back(), all_triangles(part_meshes.back()));
         parts.insert(parts.end(), t.begin(), t.end());
-        ++count;
     }
+    const size_t count = part_meshes.size();
     const double diagonal = box_of(input).diagonal();
     // Area samples for the mean (vertices would weight dense regions), all for the max.
     std::vector<uint32_t> area_source, vertex_source;
@@ -605,6 +608,15 @@ json check_cover(int argc, char** argv) {
     out["mean"] = mean_kept;
     out["max_ratio"] = top / diagonal;
     out["mean_ratio"] = mean_kept / diagonal;
+    double winding = 0, nearest = std::numeric_limits<double>::infinity();
+    size_t nearest_part = 0;
+    for (size_t k = 0; k < count; ++k) {
+        winding += winding_number(part_meshes[k], top_at);
+        const Distances d = distances({top_at}, triangles_of(part_meshes[k], all_triangles(part_meshes[k])));
+        if (d.max < nearest) nearest = d.max, nearest_part = k;
+    }
+    out["max_part"] = nearest_part;
+    out["max_side"] = winding >= 0.5 ? "buried" : "uncovered";
     return out;
 }
 

@@ -373,8 +373,9 @@ def process_model(row, args, runner, with_mold):
         problems.append("faithfulness not measured: " + cover["error"])
         fig = "%d parts" % len(parts)
     else:
-        fig = "%d parts, input to parts max %s%% / mean %s%% of the diagonal" % (
-            len(parts), fmt(100 * cover["max_ratio"]), fmt(100 * cover["mean_ratio"]))
+        fig = "%d parts, input to parts max %s%% (%s, part %s) / mean %s%% of the diagonal" % (
+            len(parts), fmt(100 * cover["max_ratio"]), cover["max_side"], cover["max_part"],
+            fmt(100 * cover["mean_ratio"]))
         if cover.get("enclosed_samples"):
             fig += " (%d enclosed input samples left out)" % cover["enclosed_samples"]
         if cover["max_ratio"] > MOLD_MAX_RATIO or cover["mean_ratio"] > MOLD_MEAN_RATIO:
