@@ -1,6 +1,7 @@
 //! Bounding box, areas, signed volume and validation of the plain mesh type.
 #include "core/mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -13,22 +14,23 @@ double BoundingBox::diagonal() const {
     return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
+void BoundingBox::add(const Vec3& p) {
+    for (int k = 0; k < 3; ++k) {
+        min[k] = std::min(min[k], p[k]);
+        max[k] = std::max(max[k], p[k]);
+    }
+}
+
 BoundingBox bounding_box(const Mesh& mesh, bool referenced_only) {
     BoundingBox box;
     const double inf = std::numeric_limits<double>::infinity();
     box.min = {inf, inf, inf};
     box.max = {-inf, -inf, -inf};
-    auto add = [&box](const Vec3& p) {
-        for (int k = 0; k < 3; ++k) {
-            box.min[k] = std::min(box.min[k], p[k]);
-            box.max[k] = std::max(box.max[k], p[k]);
-        }
-    };
     if (referenced_only) {
         for (const Triangle& t : mesh.triangles)
-            for (uint32_t v : t) add(mesh.vertices[v]);
+            for (uint32_t v : t) box.add(mesh.vertices[v]);
     } else {
-        for (const Vec3& p : mesh.vertices) add(p);
+        for (const Vec3& p : mesh.vertices) box.add(p);
     }
     if (box.min[0] > box.max[0]) return BoundingBox{};
     return box;

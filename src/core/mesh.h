@@ -23,6 +23,8 @@ struct BoundingBox {
     Vec3 min{0, 0, 0};
     Vec3 max{0, 0, 0};
     double diagonal() const;
+    //! Grows the box to hold `p`.
+    void add(const Vec3& p);
 };
 
 //! Bounding box of the vertices that triangles use (all vertices if

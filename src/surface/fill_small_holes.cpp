@@ -2,7 +2,6 @@
 #define CGAL_EIGEN3_ENABLED  // fairing solves with Eigen (linked by this module)
 #include "surface/fill_small_holes.h"
 
-#include <algorithm>
 #include <iterator>
 #include <vector>
 
@@ -35,11 +34,7 @@ bool may_have_only_small_holes(const Mesh& mesh, double max_diameter) {
     if (loops.empty()) return false;
     for (const std::vector<uint32_t>& loop : loops) {
         BoundingBox box{mesh.vertices[loop[0]], mesh.vertices[loop[0]]};
-        for (uint32_t v : loop)
-            for (int k = 0; k < 3; ++k) {
-                box.min[k] = std::min(box.min[k], mesh.vertices[v][k]);
-                box.max[k] = std::max(box.max[k], mesh.vertices[v][k]);
-            }
+        for (uint32_t v : loop) box.add(mesh.vertices[v]);
         if (!(box.diagonal() <= max_diameter)) return false;
     }
     return true;

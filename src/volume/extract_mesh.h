@@ -6,8 +6,8 @@
 //! at one position (where sheets touch at a point, each copy is moved 1% of
 //! the way toward the centre of its ring, into its own sheet), and without
 //! shells, solid or void, under an eighth of a voxel³ in volume or flat
-//! (mesh_shells.h; sign noise: crumbs and slivers). An empty level set gives an empty mesh. Checks
-//! cancellation between stages.
+//! (mesh_shells.h; sign noise: crumbs and slivers). An empty level set gives
+//! an empty mesh. Checks cancellation between stages.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,6 @@
 //! Shells of a mesh (see mesh_shells.h).
 #include "volume/mesh_shells.h"
 
-#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -69,11 +68,7 @@ bool is_flat_shell(const Mesh& mesh, const MeshShell& shell, double diagonal) {
     BoundingBox box{first, first};
     for (uint32_t t : shell.triangles) {
         area += triangle_area(mesh, mesh.triangles[t]);
-        for (uint32_t v : mesh.triangles[t])
-            for (int k = 0; k < 3; ++k) {
-                box.min[k] = std::min(box.min[k], mesh.vertices[v][k]);
-                box.max[k] = std::max(box.max[k], mesh.vertices[v][k]);
-            }
+        for (uint32_t v : mesh.triangles[t]) box.add(mesh.vertices[v]);
     }
     const double thickness = 2.0 * std::abs(shell.volume) / area;
     return thickness < 1e-4 * diagonal && thickness < 0.01 * box.diagonal();

@@ -74,11 +74,8 @@ uint32_t WindingGradientBound::build(uint32_t first, uint32_t count) {
     nodes_.push_back(Node{});
     Node node{segment_box(edges_[first].a, edges_[first].b), 0.0, first, count};
     for (uint32_t i = first; i < first + count; ++i) {
-        const BoundingBox box = segment_box(edges_[i].a, edges_[i].b);
-        for (int k = 0; k < 3; ++k) {
-            node.box.min[k] = std::min(node.box.min[k], box.min[k]);
-            node.box.max[k] = std::max(node.box.max[k], box.max[k]);
-        }
+        node.box.add(edges_[i].a);
+        node.box.add(edges_[i].b);
         node.weight += edges_[i].weight;
     }
     if (count <= edges_per_leaf) {
