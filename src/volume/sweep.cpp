@@ -25,6 +25,8 @@ namespace fabvdb::volume {
 
 namespace {
 
+using Sampler = openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler>;
+
 openvdb::FloatGrid::Ptr resampled(const openvdb::FloatGrid& grid, const openvdb::math::Transform::Ptr& transform,
                                   float background, ProgressInterrupter& interrupter, const Progress& progress) {
     auto out = openvdb::FloatGrid::create(background);
@@ -33,6 +35,42 @@ openvdb::FloatGrid::Ptr resampled(const openvdb::FloatGrid& grid, const openvdb:
     openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(grid, *out, interrupter);
     progress.check();
     return out;
+}
+
+// The union of `solids` on the voxels of `box` in `transform`: each solid
+// sampled where the voxel lies (trilinear, in the solid's own frame), only
+// within the solid's active box, so the cost grows with the block and not
+// with the solids' surfaces (a resample through a mesh per solid would).
+openvdb::FloatGrid::Ptr union_on_block(const std::vector<openvdb::FloatGrid::ConstPtr>& solids,
+                                       const openvdb::CoordBBox& box, const openvdb::math::Transform& transform,
+                                       float background, const Progress& progress) {
+    openvdb::tools::Dense<float> block(box, background);
+    for (const auto& solid : solids) {
+        openvdb::CoordBBox active = solid->evalActiveVoxelBoundingBox();
+        if (active.empty()) continue;
+        active.expand(1);
+        const openvdb::BBoxd index = transform.worldToIndex(solid->transform().indexToWorld(active));
+        openvdb::CoordBBox within(openvdb::Coord::floor(index.min()), openvdb::Coord::ceil(index.max()));
+        within.intersect(box);
+        if (within.empty()) continue;
+        tbb::parallel_for(tbb::blocked_range<int>(within.min().x(), within.max().x() + 1),
+                          [&](const tbb::blocked_range<int>& range) {
+                              if (progress.cancelled()) return;
+                              const openvdb::FloatGrid::ConstAccessor access = solid->getConstAccessor();
+                              const Sampler sampler(access, solid->transform());
+                              float* data = block.data();
+                              for (int x = range.begin(); x != range.end(); ++x)
+                                  for (int y = within.min().y(); y <= within.max().y(); ++y)
+                                      for (int z = within.min().z(); z <= within.max().z(); ++z) {
+                                          const openvdb::Coord ijk(x, y, z);
+                                          const float value = float(sampler.wsSample(transform.indexToWorld(ijk)));
+                                          float& kept = data[block.coordToOffset(ijk)];
+                                          kept = std::min(kept, std::clamp(value, -background, background));
+                                      }
+                          });
+        progress.check();
+    }
+    return dense_level_set(block, transform, background, progress);
 }
 
 // Each column of the dense block (z is contiguous) becomes the hull of where
@@ -94,27 +132,25 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
     figures.volume_before = level_set_volume(*aligned);
     if (aligned->activeVoxelCount() == 0) throw Error(FABVDB_ERR_BAD_INPUT, "the part to sweep is empty");
 
+    openvdb::CoordBBox box = aligned->evalActiveVoxelBoundingBox();
+    box.expand(1);
+    // The block is held once, twice with an input surface to keep (before
+    // and after the sweep), and once more for the other parts.
+    const uint64_t blocks = 1 + (options.kept_surface ? 1 : 0) + (keep_out.empty() ? 0 : 1);
+    const uint64_t dense_bytes = uint64_t(box.volume()) * sizeof(float) * blocks;
+    if (options.memory_budget_bytes && dense_bytes > options.memory_budget_bytes)
+        throw Error(FABVDB_ERR_OUT_OF_BUDGET, "sweeping the part needs " + std::to_string(dense_bytes >> 20) +
+                                                  " MiB of column buffer, over the memory budget");
+
     // The other parts on the aligned grid: the sweep's added material keeps
     // out of them, and trimming does not give up what they hold.
     openvdb::FloatGrid::Ptr others;
     if (!keep_out.empty()) {
         progress.stage("sweep: other parts");
-        for (size_t i = 0; i < keep_out.size(); ++i) {
-            openvdb::FloatGrid::Ptr solid = resampled(*keep_out[i], transform, background, interrupter, progress);
-            if (!others) others = solid;
-            else openvdb::tools::csgUnion(*others, *solid);
-            progress.update(double(i + 1) / double(keep_out.size()));
-        }
+        others = union_on_block(keep_out, box, *transform, background, progress);
     }
 
     progress.stage("sweep: columns");
-    openvdb::CoordBBox box = aligned->evalActiveVoxelBoundingBox();
-    box.expand(1);
-    // With an input surface to keep, the block is held twice (before and after the sweep).
-    const uint64_t dense_bytes = uint64_t(box.volume()) * sizeof(float) * (options.kept_surface ? 2 : 1);
-    if (options.memory_budget_bytes && dense_bytes > options.memory_budget_bytes)
-        throw Error(FABVDB_ERR_OUT_OF_BUDGET, "sweeping the part needs " + std::to_string(dense_bytes >> 20) +
-                                                  " MiB of column buffer, over the memory budget");
     openvdb::FloatGrid::Ptr swept;
     {
         openvdb::tools::Dense<float> dense(box);

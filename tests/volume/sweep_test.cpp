@@ -1,8 +1,9 @@
 // Moldability enforcement by sweeping: a ring standing on its side (a torus
 // whose axis is perpendicular to d, so lines along d cross it four times)
 // becomes a double height field along d that still contains the ring; the
-// added volume avoids a keep-out solid; checked on the grid's columns and by
-// ray casting on the extracted mesh, not by anything the sweep computed.
+// added volume avoids a keep-out solid, also one on a turned grid; checked on
+// the grid's columns and by ray casting on the extracted mesh, not by
+// anything the sweep computed.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include <openvdb/tools/Composite.h>
+#include <openvdb/tools/MeshToVolume.h>
 
 #include "core/error.h"
 #include "support/cgal_mesh.h"
@@ -95,14 +97,12 @@ TEST_P(Sweep, RingBecomesDoubleHeightFieldContainingIt) {
 INSTANTIATE_TEST_SUITE_P(Directions, Sweep,
                          ::testing::Values(Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0.3}, Vec3{0.3, -0.2, 1}));
 
-TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
-    openvdb::initialize();
+// The ring's hole is filled by the sweep along z, except where `keep_out` (a
+// block in the middle of the hole) lies.
+void expect_ring_sweep_avoids_block(const openvdb::FloatGrid::ConstPtr& keep_out) {
     const Mesh ring = fabvdb::test::make_standing_torus(10.0, 3.0, 48, 24);
-    // A block filling the middle of the ring's hole, where the sweep adds volume.
-    const Mesh block = fabvdb::test::make_box({-4, -2, -4}, {4, 2, 4});
     fabvdb::Progress progress;
     fabvdb::volume::SweepStats stats;
-    openvdb::FloatGrid::ConstPtr keep_out = plain_level_set(block, 0.4);
     auto swept = fabvdb::volume::sweep_double_height_field(*plain_level_set(ring, 0.4), {0, 0, 1}, {keep_out}, {},
                                                            progress, &stats);
     const Mesh result = fabvdb::volume::extract_mesh(*swept, 0.0, progress);
@@ -113,6 +113,25 @@ TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
     // Outside the block, the hole is still filled.
     EXPECT_TRUE(caster.inside({6.0, 0.1, 0.0}));
     EXPECT_GT(stats.removed_by_keep_out, 0.8 * 8 * 4 * 8);
+}
+
+Mesh block_in_the_ring() { return fabvdb::test::make_box({-4, -2, -4}, {4, 2, 4}); }
+
+TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
+    openvdb::initialize();
+    expect_ring_sweep_avoids_block(plain_level_set(block_in_the_ring(), 0.4));
+}
+
+// Parts already swept lie on grids turned to their own directions.
+TEST(SweepKeepOut, OtherPartOnATurnedGridIsAvoidedToo) {
+    openvdb::initialize();
+    const Mesh block = block_in_the_ring();
+    std::vector<openvdb::Vec3s> points;
+    for (const Vec3& p : block.vertices) points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
+    std::vector<openvdb::Vec3I> triangles;
+    for (const auto& t : block.triangles) triangles.emplace_back(t[0], t[1], t[2]);
+    const openvdb::math::Transform::Ptr turned = fabvdb::volume::aligned_transform(0.4, {1.0, 0.5, 0.2});
+    expect_ring_sweep_avoids_block(openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*turned, points, triangles, 3.0f));
 }
 
 // A block with a slot cut into its side, under the top: every column over the
