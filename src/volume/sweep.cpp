@@ -10,14 +10,15 @@
 
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/Dense.h>
+#include <openvdb/tools/GridTransformer.h>
 #include <openvdb/tools/Interpolation.h>
 
 #include "core/error.h"
 #include "volume/aligned_frame.h"
 #include "volume/dense_level_set.h"
 #include "volume/level_set_volume.h"
+#include "volume/progress_interrupter.h"
 #include "volume/require_level_set.h"
-#include "volume/resample_level_set.h"
 #include "volume/trim_deep_fills.h"
 
 namespace fabvdb::volume {
@@ -25,6 +26,16 @@ namespace fabvdb::volume {
 namespace {
 
 using Sampler = openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler>;
+
+openvdb::FloatGrid::Ptr resampled(const openvdb::FloatGrid& grid, const openvdb::math::Transform::Ptr& transform,
+                                  float background, ProgressInterrupter& interrupter, const Progress& progress) {
+    auto out = openvdb::FloatGrid::create(background);
+    out->setTransform(transform);
+    out->setGridClass(openvdb::GRID_LEVEL_SET);
+    openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(grid, *out, interrupter);
+    progress.check();
+    return out;
+}
 
 // The union of `solids` on the voxels of `box` in `transform`: each solid
 // sampled where the voxel lies (trilinear, in the solid's own frame), only
@@ -113,9 +124,10 @@ openvdb::FloatGrid::Ptr sweep_double_height_field(const openvdb::FloatGrid& part
     const double voxel = part.voxelSize()[0];
     const float background = part.background();
     const openvdb::math::Transform::Ptr transform = aligned_transform(voxel, direction);
+    ProgressInterrupter interrupter(progress);
 
     progress.stage("sweep: resample to the parting direction");
-    openvdb::FloatGrid::Ptr aligned = resample_level_set(part, *transform, progress);
+    openvdb::FloatGrid::Ptr aligned = resampled(part, transform, background, interrupter, progress);
     SweepStats figures;
     figures.volume_before = level_set_volume(*aligned);
     if (aligned->activeVoxelCount() == 0) throw Error(FABVDB_ERR_BAD_INPUT, "the part to sweep is empty");

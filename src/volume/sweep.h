@@ -2,7 +2,7 @@
 //! made a double height field along d is (P swept along +d) ∩ (P swept along
 //! −d), i.e. every line parallel to d meets it in one interval, the hull of
 //! where it met P. Takes a level set and d; resamples it into a frame whose
-//! index z axis is d (resample_level_set.h), takes the running minimum of φ up and down each column,
+//! index z axis is d, takes the running minimum of φ up and down each column,
 //! keeps the larger (the intersection); given the input surface, trims
 //! instead of filling where a fill would bury it deep (trim_deep_fills.h);
 //! rebuilds the narrow band, and removes the volume of the `keep_out` solids
