@@ -7,9 +7,9 @@
 //! instead of filling where a fill would bury it deep (trim_deep_fills.h);
 //! rebuilds the narrow band, and removes the volume of the `keep_out` solids
 //! (the other parts, sampled on the part's block in their own frames) so
-//! nothing is added inside them. Returns a level set on
-//! the d-aligned transform (same voxel size, same world space). Cancellable;
-//! refuses over the memory budget.
+//! nothing is added inside them. Returns a level set on the d-aligned
+//! transform (same voxel size, same world space). Cancellable; refuses over
+//! the memory budget.
 #pragma once
 
 #include <cstdint>
