@@ -9,5 +9,7 @@
 namespace fabvdb::test {
 
 openvdb::FloatGrid::Ptr plain_level_set(const Mesh& mesh, double voxel);
+//! The same on any linear transform (e.g. one turned to a parting direction).
+openvdb::FloatGrid::Ptr plain_level_set(const Mesh& mesh, const openvdb::math::Transform& transform);
 
 }  // namespace fabvdb::test

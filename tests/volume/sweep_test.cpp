@@ -12,7 +12,6 @@
 #include <vector>
 
 #include <openvdb/tools/Composite.h>
-#include <openvdb/tools/MeshToVolume.h>
 
 #include "core/error.h"
 #include "support/cgal_mesh.h"
@@ -125,13 +124,8 @@ TEST(SweepKeepOut, AddedVolumeAvoidsOtherParts) {
 // Parts already swept lie on grids turned to their own directions.
 TEST(SweepKeepOut, OtherPartOnATurnedGridIsAvoidedToo) {
     openvdb::initialize();
-    const Mesh block = block_in_the_ring();
-    std::vector<openvdb::Vec3s> points;
-    for (const Vec3& p : block.vertices) points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
-    std::vector<openvdb::Vec3I> triangles;
-    for (const auto& t : block.triangles) triangles.emplace_back(t[0], t[1], t[2]);
     const openvdb::math::Transform::Ptr turned = fabvdb::volume::aligned_transform(0.4, {1.0, 0.5, 0.2});
-    expect_ring_sweep_avoids_block(openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*turned, points, triangles, 3.0f));
+    expect_ring_sweep_avoids_block(plain_level_set(block_in_the_ring(), *turned));
 }
 
 // A block with a slot cut into its side, under the top: every column over the
