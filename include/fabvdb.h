@@ -835,7 +835,9 @@ FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
  *   rotation taking its parting direction to +Z), mean_distance_ratio and
  *   hausdorff_ratio (distances from the input surface, at its vertices and
  *   every voxel inside larger triangles, to the nearest part surface over the
- *   bounding-box diagonal; the mean weighted by area), timings {stage:
+ *   bounding-box diagonal; the mean weighted by area; input surface that
+ *   the input's own solid encloses, such as the inner faces of overlapping
+ *   shells, left out), timings {stage:
  *   seconds, total}, and decomposition (the decomposition's report, when it
  *   ran) or decomposition_file.
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL mesh or out_dir, an

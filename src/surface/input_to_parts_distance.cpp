@@ -6,6 +6,7 @@
 
 #include "core/vec3_ops.h"
 #include "surface/surface_distance.h"
+#include "volume/winding_number.h"
 
 namespace fabvdb::surface {
 
@@ -19,12 +20,27 @@ InputToParts input_to_parts_distance(const Mesh& input, const std::vector<const 
         part_of_triangle.insert(part_of_triangle.end(), parts[p]->triangles.size(), p);
     }
     const SurfaceDistance distance(all);
+    const volume::WindingNumber winding(input);
+    const double probe = 0.05 * spacing;
+    // True where the input's solid lies on both sides of the surface at
+    // `point`, whose normal (any length) is `normal`.
+    const auto enclosed = [&](const Vec3& point, const Vec3& normal) {
+        const double length = norm(normal);
+        if (!(length > 0)) return false;
+        const Vec3 step = (probe / length) * normal;
+        const double front = winding(point + step), back = winding(point - step);
+        return (front >= 0.5 && back >= 0.5) || (front <= -0.5 && back <= -0.5);
+    };
     InputToParts result;
     result.part_max.assign(parts.size(), 0.0);
     std::vector<double> sum(parts.size(), 0.0), weight(parts.size(), 0.0);
     double total = 0, total_weight = 0;
-    const auto add = [&](const Vec3& point, double w) {
+    const auto add = [&](const Vec3& point, const Vec3& normal, double w) {
         const SurfaceDistance::Nearest nearest = distance.nearest(point);
+        if (nearest.distance > 0.5 * spacing && enclosed(point, normal)) {
+            ++result.enclosed_samples;
+            return;
+        }
         const size_t p = part_of_triangle[nearest.triangle];
         sum[p] += w * nearest.distance;
         weight[p] += w;
@@ -34,27 +50,30 @@ InputToParts input_to_parts_distance(const Mesh& input, const std::vector<const 
         total_weight += w;
     };
     std::vector<double> vertex_weight(input.vertices.size(), 0.0);
+    std::vector<Vec3> vertex_normal(input.vertices.size(), Vec3{0, 0, 0});
     std::vector<char> used(input.vertices.size(), 0);
     for (size_t t = 0; t < input.triangles.size(); ++t) {
         const Triangle& tri = input.triangles[t];
         const Vec3 &a = input.vertices[tri[0]], &b = input.vertices[tri[1]], &c = input.vertices[tri[2]];
-        const double area = 0.5 * norm(cross(b - a, c - a));
+        const Vec3 normal = cross(b - a, c - a);
+        const double area = 0.5 * norm(normal);
         const double longest = std::max({norm(b - a), norm(c - b), norm(a - c)});
         const int n = std::max(1, int(std::ceil(longest / spacing)));
         const double share = area / double((n + 1) * (n + 2) / 2);
         for (uint32_t v : tri) {
             vertex_weight[v] += share;
+            vertex_normal[v] = vertex_normal[v] + normal;
             used[v] = 1;
         }
         for (int i = 0; i <= n; ++i)
             for (int j = 0; i + j <= n; ++j) {
                 const bool corner = ((i == 0 || i == n) && j == 0) || (i == 0 && j == n);
-                if (!corner) add(a + (double(i) / n) * (b - a) + (double(j) / n) * (c - a), share);
+                if (!corner) add(a + (double(i) / n) * (b - a) + (double(j) / n) * (c - a), normal, share);
             }
         if (t % 4096 == 0) progress.update(0.5 * double(t) / double(input.triangles.size()));
     }
     for (size_t v = 0; v < input.vertices.size(); ++v) {
-        if (used[v]) add(input.vertices[v], vertex_weight[v]);
+        if (used[v]) add(input.vertices[v], vertex_normal[v], vertex_weight[v]);
         if (v % 4096 == 0) progress.update(0.5 + 0.5 * double(v) / double(input.vertices.size()));
     }
     result.mean = total_weight > 0 ? total / total_weight : 0.0;

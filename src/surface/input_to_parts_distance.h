@@ -5,8 +5,14 @@
 //! largest distance and the area-weighted mean (each triangle's area split
 //! evenly over its samples, a vertex taking its share from every triangle
 //! around it), overall and per part (the part each sample is nearest to).
-//! Costs one AABB tree over the parts (surface_distance.h) and a query per
-//! sample: about area / spacing² + vertices.
+//! Input surface that the input's own solid encloses (the inner faces of
+//! overlapping shells) has no surface of the solid to reproduce: a sample
+//! more than spacing / 2 from the parts whose generalized winding number is
+//! at least 1/2, of one sign, at 0.05 × spacing in front of and behind it
+//! (along its triangle's normal, a vertex's area-weighted normal) is left out.
+//! Costs one AABB tree over the parts (surface_distance.h), one winding-number
+//! tree over the input (volume/winding_number.h) and a query per sample:
+//! about area / spacing² + vertices.
 #pragma once
 
 #include <vector>
@@ -21,6 +27,7 @@ struct InputToParts {
     double mean = 0;                  //!< mm, area-weighted
     std::vector<double> part_max;     //!< mm, over the samples nearest to each part
     std::vector<double> part_mean;    //!< mm, area-weighted, likewise (0: no sample nearest to it)
+    size_t enclosed_samples = 0;      //!< samples left out as enclosed by the input's solid
 };
 
 //! `parts`: at least one with triangles. `spacing` > 0, mm.

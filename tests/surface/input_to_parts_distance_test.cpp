@@ -5,10 +5,14 @@
 // hole's mean distance to its rim (side / 6) times its share of the area
 // (16 / 100): 0.1067 mm. A second part under the hole takes the samples
 // there; with parts that hold the input exactly, every distance is 0.
+// Of an input made of two boxes, a part holding only the outer box
+// reproduces the solid when the second box lies inside the first (its
+// surface is left out), and misses it by up to 20 mm when it lies beside it.
 #include <gtest/gtest.h>
 
 #include <vector>
 
+#include "support/shapes.h"
 #include "surface/input_to_parts_distance.h"
 
 namespace {
@@ -62,6 +66,21 @@ TEST(InputToPartsDistance, IsZeroOnTheInputItself) {
     const auto d = fabvdb::surface::input_to_parts_distance(input, {&part, &hole}, 0.3, progress);
     EXPECT_LT(d.max, 1e-12);
     EXPECT_LT(d.mean, 1e-12);
+}
+
+TEST(InputToPartsDistance, LeavesOutSurfaceTheInputsSolidEncloses) {
+    fabvdb::Progress progress;
+    const Mesh outer = fabvdb::test::make_box({0, 0, 0}, {20, 20, 20});
+    const Mesh inside = fabvdb::test::merged(outer, fabvdb::test::make_box({5, 5, 5}, {15, 15, 15}));
+    const auto enclosed = fabvdb::surface::input_to_parts_distance(inside, {&outer}, 0.5, progress);
+    EXPECT_LT(enclosed.max, 1e-9);
+    EXPECT_LT(enclosed.mean, 1e-9);
+    EXPECT_GT(enclosed.enclosed_samples, 0u);
+
+    const Mesh beside = fabvdb::test::merged(outer, fabvdb::test::make_box({30, 0, 0}, {40, 10, 10}));
+    const auto apart = fabvdb::surface::input_to_parts_distance(beside, {&outer}, 0.5, progress);
+    EXPECT_NEAR(apart.max, 20.0, 1e-9);
+    EXPECT_EQ(apart.enclosed_samples, 0u);
 }
 
 }  // namespace
