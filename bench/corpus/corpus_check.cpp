@@ -393,28 +393,47 @@ std::vector<char> enclosed(const Mesh& mesh, const std::vector<Vec3>& points, co
     return inside;
 }
 
-//! Points just inside a void shell's void: in front of its 7 largest
-//! triangles (a void shell faces into its void), a tenth of the triangle's
-//! size and at most 1e-3 of `diagonal` away.
+//! Points inside a void shell's void: from each of its 7 largest triangles
+//! (a void shell faces into its void), the middle of the segment along the
+//! triangle's normal up to where it meets the shell again, so a void a
+//! rebuild moved a little off the input's surface is still probed in its
+//! middle; 1e-3 of `diagonal` in front when the segment meets nothing.
 std::vector<Vec3> points_in_void(const Mesh& mesh, const std::vector<uint32_t>& labels, uint32_t shell,
                                  double diagonal) {
     std::vector<std::pair<double, uint32_t>> by_area;
+    std::vector<uint32_t> members;
     for (uint32_t i = 0; i < mesh.triangles.size(); ++i)
-        if (labels[i] == shell) by_area.push_back({area_of(mesh, mesh.triangles[i]), i});
+        if (labels[i] == shell) {
+            by_area.push_back({area_of(mesh, mesh.triangles[i]), i});
+            members.push_back(i);
+        }
     const size_t n = std::min<size_t>(7, by_area.size());
     std::partial_sort(by_area.begin(), by_area.begin() + long(n), by_area.end(),
                       [](auto& a, auto& b) { return a.first > b.first; });
+    const auto triangles = triangles_of(mesh, members);
+    Tree tree(triangles.begin(), triangles.end());
     std::vector<Vec3> points;
     for (size_t j = 0; j < n; ++j) {
         const auto& t = mesh.triangles[by_area[j].second];
         const Vec3 normal = cross(sub(mesh.vertices[t[1]], mesh.vertices[t[0]]), sub(mesh.vertices[t[2]], mesh.vertices[t[0]]));
         const double length = norm(normal);
         if (!(length > 0)) continue;
-        const double step = std::min(1e-3 * diagonal, 0.1 * std::sqrt(by_area[j].first));
-        Vec3 p;
+        Vec3 centre;
         for (int k = 0; k < 3; ++k)
-            p[k] = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3 +
-                   step * normal[k] / length;
+            centre[k] = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3;
+        const Kernel::Point_3 from(centre[0], centre[1], centre[2]);
+        const Kernel::Ray_3 ray(from, Kernel::Vector_3(normal[0], normal[1], normal[2]));
+        std::vector<Tree::Intersection_and_primitive_id<Kernel::Ray_3>::Type> hits;
+        tree.all_intersections(ray, std::back_inserter(hits));
+        double reach = std::numeric_limits<double>::infinity();
+        for (const auto& hit : hits)
+            if (const auto* point = boost::get<Kernel::Point_3>(&hit.first)) {
+                const double d = std::sqrt(CGAL::squared_distance(from, *point));
+                if (d > 1e-9 * diagonal) reach = std::min(reach, d);
+            }
+        if (!std::isfinite(reach)) reach = 2e-3 * diagonal;
+        Vec3 p;
+        for (int k = 0; k < 3; ++k) p[k] = centre[k] + 0.5 * reach * normal[k] / length;
         points.push_back(p);
     }
     return points;
