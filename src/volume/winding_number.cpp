@@ -12,22 +12,62 @@ namespace {
 constexpr uint32_t leaf_size = 8;
 constexpr double inverse_four_pi = 0.25 / M_PI;
 
-// Solid angle of triangle (a, b, c) seen from the origin, over 4π
-// (Van Oosterom & Strackee 1983): positive when the triangle winds
+// Solid angles of triangles seen from the origin (Van Oosterom & Strackee
+// 1983): half of triangle (a, b, c)'s is the argument of the complex number
+// denominator + i·det below, positive when the triangle winds
 // counter-clockwise seen from the origin's far side. From a point in the
 // triangle's plane it is 0 (on the triangle itself ±1/2 would be as right).
-double solid_angle_fraction(const double* a, const double* b, const double* c) {
-    const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-    const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                       a[2] * (b[0] * c[1] - b[1] * c[0]);
-    if (det == 0.0) return 0.0;
-    const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    const double bc = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
-    const double ca = c[0] * a[0] + c[1] * a[1] + c[2] * a[2];
-    const double denominator = la * lb * lc + ab * lc + bc * la + ca * lb;
-    return 2.0 * std::atan2(det, denominator) * inverse_four_pi;
+// Their sum is the argument of the numbers' product plus 2π per turn the
+// product's argument wraps, so one atan2 serves a whole run of triangles.
+class SolidAngleSum {
+public:
+    void add(const double* a, const double* b, const double* c) {
+        const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                           a[2] * (b[0] * c[1] - b[1] * c[0]);
+        if (det == 0.0) return;
+        const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+        const double lc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        const double bc = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
+        const double ca = c[0] * a[0] + c[1] * a[1] + c[2] * a[2];
+        const double u = la * lb * lc + ab * lc + bc * la + ca * lb, v = det;
+        const double x = re_ * u - im_ * v;
+        const double y = re_ * v + im_ * u + 0.0;  // + 0.0: no −0, whose atan2 would read −π
+        // Both arguments in (0, π] and the product's not: their sum passed π.
+        // Both in (−π, 0) and the product's in (0, π]: it passed −π.
+        const bool upper = upper_half(re_, im_), factor_upper = upper_half(u, v), product_upper = upper_half(x, y);
+        if (upper && factor_upper && !product_upper) ++turns_;
+        if (im_ < 0 && v < 0 && product_upper) --turns_;
+        const double m = std::max(std::abs(x), std::abs(y));
+        if (m > 1e100 || m < 1e-100) {
+            re_ = x / m;
+            im_ = y / m;
+        } else {
+            re_ = x;
+            im_ = y;
+        }
+    }
+    //! The sum of the solid angles added, over 4π.
+    double fraction() const { return (std::atan2(im_, re_) + 2.0 * M_PI * turns_) * 2.0 * inverse_four_pi; }
+
+private:
+    // Argument in (0, π].
+    static bool upper_half(double re, double im) { return im > 0 || (im == 0 && re < 0); }
+    double re_ = 1.0, im_ = 0.0;
+    long turns_ = 0;
+};
+
+// Adds triangles first .. first + count − 1 of `corners` (9 doubles each)
+// as seen from q.
+void add_triangles(const double* corners, uint32_t first, uint32_t count, const Vec3& q, SolidAngleSum& sum) {
+    for (uint32_t i = first; i < first + count; ++i) {
+        const double* p = corners + 9 * size_t(i);
+        const double a[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+        const double b[3] = {p[3] - q[0], p[4] - q[1], p[5] - q[2]};
+        const double c[3] = {p[6] - q[0], p[7] - q[1], p[8] - q[2]};
+        sum.add(a, b, c);
+    }
 }
 
 }  // namespace
@@ -117,23 +157,16 @@ uint32_t WindingNumber::build(uint32_t first, uint32_t count, std::vector<double
     return index;
 }
 
-double WindingNumber::triangles_exact(uint32_t first, uint32_t count, const Vec3& q) const {
-    double sum = 0.0;
-    for (uint32_t i = first; i < first + count; ++i) {
-        const double* p = &corners_[9 * size_t(i)];
-        const double a[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-        const double b[3] = {p[3] - q[0], p[4] - q[1], p[5] - q[2]};
-        const double c[3] = {p[6] - q[0], p[7] - q[1], p[8] - q[2]};
-        sum += solid_angle_fraction(a, b, c);
-    }
-    return sum;
+double WindingNumber::exact(const Vec3& q) const {
+    SolidAngleSum sum;
+    add_triangles(corners_.data(), 0, uint32_t(corners_.size() / 9), q, sum);
+    return sum.fraction();
 }
-
-double WindingNumber::exact(const Vec3& q) const { return triangles_exact(0, uint32_t(corners_.size() / 9), q); }
 
 double WindingNumber::operator()(const Vec3& q) const {
     if (nodes_.empty()) return 0.0;
     double sum = 0.0;
+    SolidAngleSum near;
     uint32_t stack[128];
     int top = 0;
     stack[top++] = 0;
@@ -145,13 +178,13 @@ double WindingNumber::operator()(const Vec3& q) const {
             const double dot = node.area_normal[0] * d[0] + node.area_normal[1] * d[1] + node.area_normal[2] * d[2];
             sum += dot * inverse_four_pi / (distance_squared * std::sqrt(distance_squared));
         } else if (node.count > 0) {
-            sum += triangles_exact(node.first, node.count, q);
+            add_triangles(corners_.data(), node.first, node.count, q, near);
         } else {
             stack[top++] = node.first;
             stack[top++] = uint32_t(&node - nodes_.data()) + 1;
         }
     }
-    return sum;
+    return sum + near.fraction();
 }
 
 }  // namespace fabvdb::volume

@@ -5,8 +5,10 @@
 //! natural surface that closes them). Evaluated hierarchically after Barill
 //! et al. 2018: a bounding-volume tree over the triangles whose far nodes are
 //! replaced by their dipole (the area-weighted normal at the area centroid),
-//! and near leaves summed exactly. Built once, then queried concurrently from any
-//! number of threads (queries are const and allocate nothing).
+//! and near leaves summed exactly (their solid angles as the argument of one
+//! product of complex numbers, so a query takes one atan2). Built once, then
+//! queried concurrently from any number of threads (queries are const and
+//! allocate nothing).
 #pragma once
 
 #include <cstdint>
@@ -38,7 +40,6 @@ private:
     };
     uint32_t build(uint32_t first, uint32_t count, std::vector<double>& centroids, std::vector<uint32_t>& order,
                    double accuracy);
-    double triangles_exact(uint32_t first, uint32_t count, const Vec3& q) const;
 
     std::vector<Node> nodes_;
     std::vector<double> corners_;  // 9 doubles per triangle, in tree order
