@@ -281,9 +281,28 @@ std::vector<Triangle3> triangles_of(const Mesh& mesh, const std::vector<uint32_t
 
 json distance_json(const Distances& d) { return {{"max", d.max}, {"mean", d.mean}, {"samples", d.samples}}; }
 
+//! Distance from `from` along `direction` (any length) to the nearest point
+//! where the ray meets a triangle of `tree` farther than `skip`; infinity
+//! where it meets none.
+double free_distance(const Tree& tree, const Vec3& from, const Vec3& direction, double skip) {
+    const Kernel::Point_3 start(from[0], from[1], from[2]);
+    const Kernel::Ray_3 ray(start, Kernel::Vector_3(direction[0], direction[1], direction[2]));
+    std::vector<Tree::Intersection_and_primitive_id<Kernel::Ray_3>::Type> hits;
+    tree.all_intersections(ray, std::back_inserter(hits));
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& hit : hits)
+        if (const auto* point = boost::get<Kernel::Point_3>(&hit.first)) {
+            const double d = std::sqrt(CGAL::squared_distance(start, *point));
+            if (d > skip) nearest = std::min(nearest, d);
+        }
+    return nearest;
+}
+
 //! Validity of a mesh as stored plus per-shell orientation by parity probes:
 //! a point just in front of a triangle must be outside the solid and one just
-//! behind it inside, on the majority of a shell's largest triangles.
+//! behind it inside, on the majority of a shell's largest triangles. Each
+//! probe lies at most halfway to the next surface on its side, so a sheet
+//! thinner than the probe distance is probed inside it.
 json validity(const Mesh& mesh, std::vector<uint32_t>& labels, std::vector<int>& shell_sign) {
     json out;
     out["triangles"] = mesh.triangles.size();
@@ -313,6 +332,8 @@ json validity(const Mesh& mesh, std::vector<uint32_t>& labels, std::vector<int>&
     if (manifold && defects.empty()) {
         const Box box = box_of(mesh);
         fabvdb::test::LineCaster caster(mesh, Vec3{0.0123, 0.0371, 1.0});
+        const auto all = triangles_of(mesh, all_triangles(mesh));
+        Tree tree(all.begin(), all.end());
         std::vector<std::vector<std::pair<double, uint32_t>>> by_shell(shells);
         for (uint32_t i = 0; i < mesh.triangles.size(); ++i)
             by_shell[labels[i]].push_back({area_of(mesh, mesh.triangles[i]), i});
@@ -328,11 +349,18 @@ json validity(const Mesh& mesh, std::vector<uint32_t>& labels, std::vector<int>&
                                      sub(mesh.vertices[t[2]], mesh.vertices[t[0]]));
                 const double length = norm(n);
                 const double eps = std::min(1e-4 * box.diagonal(), 0.05 * std::sqrt(list[j].first));
+                Vec3 centre, reverse;
+                for (int k = 0; k < 3; ++k) {
+                    centre[k] = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3;
+                    reverse[k] = -n[k];
+                }
+                const double skip = 1e-9 * box.diagonal();
+                const double ahead = std::min(eps, 0.5 * free_distance(tree, centre, n, skip));
+                const double behind = std::min(eps, 0.5 * free_distance(tree, centre, reverse, skip));
                 Vec3 front, back;
                 for (int k = 0; k < 3; ++k) {
-                    const double c = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3;
-                    front[k] = c + eps * n[k] / length;
-                    back[k] = c - eps * n[k] / length;
+                    front[k] = centre[k] + ahead * n[k] / length;
+                    back[k] = centre[k] - behind * n[k] / length;
                 }
                 const bool in_front = caster.inside(front), in_back = caster.inside(back);
                 votes += (!in_front && in_back) ? 1 : (in_front && !in_back) ? -1 : 0;
@@ -421,16 +449,7 @@ std::vector<Vec3> points_in_void(const Mesh& mesh, const std::vector<uint32_t>& 
         Vec3 centre;
         for (int k = 0; k < 3; ++k)
             centre[k] = (mesh.vertices[t[0]][k] + mesh.vertices[t[1]][k] + mesh.vertices[t[2]][k]) / 3;
-        const Kernel::Point_3 from(centre[0], centre[1], centre[2]);
-        const Kernel::Ray_3 ray(from, Kernel::Vector_3(normal[0], normal[1], normal[2]));
-        std::vector<Tree::Intersection_and_primitive_id<Kernel::Ray_3>::Type> hits;
-        tree.all_intersections(ray, std::back_inserter(hits));
-        double reach = std::numeric_limits<double>::infinity();
-        for (const auto& hit : hits)
-            if (const auto* point = boost::get<Kernel::Point_3>(&hit.first)) {
-                const double d = std::sqrt(CGAL::squared_distance(from, *point));
-                if (d > 1e-9 * diagonal) reach = std::min(reach, d);
-            }
+        double reach = free_distance(tree, centre, normal, 1e-9 * diagonal);
         if (!std::isfinite(reach)) reach = 2e-3 * diagonal;
         Vec3 p;
         for (int k = 0; k < 3; ++k) p[k] = centre[k] + 0.5 * reach * normal[k] / length;
