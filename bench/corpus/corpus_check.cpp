@@ -16,7 +16,8 @@
 //       input's surface are the input's own, not cavities made, and count
 //       on the walls' outer side); --direction: the double-height-field ray test.
 //   corpus_check input IN --fit LEN
-//       the same validity measures on a corpus input (is it a clean solid?).
+//       the same validity measures on a corpus input (is it a clean solid?);
+//       mean_thickness = 2 volume / area, for telling a flat sliver.
 //   corpus_check cover IN --fit LEN PART.stl...
 //       distance from the input surface to the nearest of the parts (mold
 //       faithfulness): max (and where it is) and area-weighted mean, mm, and
@@ -372,12 +373,14 @@ json validity(const Mesh& mesh, std::vector<uint32_t>& labels, std::vector<int>&
         out["inward_shells"] = inward;
         if (inward) defects.push_back(std::to_string(inward) + " shells facing inward");
         if (undecided) defects.push_back(std::to_string(undecided) + " shells of undecided orientation");
-        double volume = 0;
+        double volume = 0, area = 0;
         for (const auto& t : mesh.triangles) {
             const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
             volume += dot(a, cross(b, c)) / 6;
+            area += area_of(mesh, t);
         }
         out["volume"] = volume;
+        out["mean_thickness"] = area > 0 ? 2 * volume / area : 0.0;
         if (!(volume > 0)) defects.push_back("volume not positive");
     }
     out["valid"] = defects.empty();

@@ -126,9 +126,9 @@ def judge_failure(run, input_path, output, input_facts, closed_input):
     if output and left_files(output):
         return "FAIL", "exit %d left an output file behind" % code
     if code in (2, 3) and name in err:
-        if code == 2 and input_facts.get("valid"):
+        if code == 2 and input_facts.get("valid") and not encloses_nothing(input_facts):
             return "FAIL", "refused a clean closed solid: " + first_line(err)
-        if code == 2 and closed_input and not undecided_orientation(input_facts):
+        if code == 2 and closed_input and not encloses_nothing(input_facts):
             return "FAIL", "refused a closed input: " + first_line(err)
         return "refused", first_line(err)
     if code in (2, 3):
@@ -136,10 +136,15 @@ def judge_failure(run, input_path, output, input_facts, closed_input):
     return "FAIL", "exit %d: %s" % (code, first_line(err))
 
 
-def undecided_orientation(facts):
-    """The checker cannot tell inside from outside of some shell of the input
-    (a flat sliver): closed, yet it encloses no volume to keep."""
-    return any("undecided orientation" in d for d in facts.get("defects", []))
+def encloses_nothing(facts):
+    """A flat sliver: closed, yet it encloses no volume to keep. The checker
+    cannot tell inside from outside of some shell of the input, or the
+    input's mean thickness (2 volume / area) is under 1e-4 of its diagonal,
+    thinner than any printer's resolution at the recipe's 60 mm."""
+    if any("undecided orientation" in d for d in facts.get("defects", [])):
+        return True
+    thickness, diagonal = facts.get("mean_thickness"), facts.get("diagonal")
+    return thickness is not None and diagonal is not None and thickness < 1e-4 * diagonal
 
 
 def first_line(text):
