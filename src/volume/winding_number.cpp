@@ -34,12 +34,13 @@ public:
         const double u = la * lb * lc + ab * lc + bc * la + ca * lb, v = det;
         const double x = re_ * u - im_ * v;
         const double y = re_ * v + im_ * u + 0.0;  // + 0.0: no −0, whose atan2 would read −π
+        const double m = std::max(std::abs(x), std::abs(y));
+        if (!(m > 0)) return;  // underflow: q on a corner, where the angle means nothing
         // Both arguments in (0, π] and the product's not: their sum passed π.
         // Both in (−π, 0) and the product's in (0, π]: it passed −π.
         const bool upper = upper_half(re_, im_), factor_upper = upper_half(u, v), product_upper = upper_half(x, y);
         if (upper && factor_upper && !product_upper) ++turns_;
         if (im_ < 0 && v < 0 && product_upper) --turns_;
-        const double m = std::max(std::abs(x), std::abs(y));
         if (m > 1e100 || m < 1e-100) {
             re_ = x / m;
             im_ = y / m;
