@@ -28,7 +28,9 @@ InputToParts input_to_parts_distance(const Mesh& input, const std::vector<const 
         const double length = norm(normal);
         if (!(length > 0)) return false;
         const Vec3 step = (probe / length) * normal;
-        const double front = winding(point + step), back = winding(point - step);
+        const double front = winding(point + step);
+        if (std::abs(front) < 0.5) return false;  // most surface: open space in front
+        const double back = winding(point - step);
         return (front >= 0.5 && back >= 0.5) || (front <= -0.5 && back <= -0.5);
     };
     InputToParts result;
