@@ -31,7 +31,7 @@ InputToParts input_to_parts_distance(const Mesh& input, const std::vector<const 
         const double front = winding(point + step);
         if (std::abs(front) < 0.5) return false;  // most surface: open space in front
         const double back = winding(point - step);
-        return (front >= 0.5 && back >= 0.5) || (front <= -0.5 && back <= -0.5);
+        return front > 0 ? back >= 0.5 : back <= -0.5;
     };
     InputToParts result;
     result.part_max.assign(parts.size(), 0.0);

@@ -1,8 +1,9 @@
 // The hierarchical winding number agrees with the exact sum, is 1 inside and 0
 // outside closed outward shells, counts overlapping shells twice, and is about
 // 1/2 across the mouth of an open box. The exact sum equals the triangles'
-// solid angles taken one by one here (one atan2 each), also where they add
-// up past ±π (every face of an octahedron around its centre, flipped or not).
+// solid angles taken one by one (tests/support's winding number, one atan2
+// each), also where they add up past ±π (every face of an octahedron around
+// its centre, flipped or not).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include "support/octahedron.h"
 #include "support/shapes.h"
+#include "support/winding_number.h"
 #include "volume/winding_number.h"
 
 namespace {
@@ -32,35 +34,13 @@ TEST(WindingNumber, TreeMatchesExactSum) {
     }
 }
 
-// Σ over triangles of Ω / 4π, Ω = 2 atan2(a·(b×c), |a||b||c| + (a·b)|c| +
-// (b·c)|a| + (c·a)|b|), corners relative to q.
-double sum_of_solid_angles(const Mesh& mesh, const fabvdb::Vec3& q) {
-    double sum = 0;
-    for (const fabvdb::Triangle& t : mesh.triangles) {
-        fabvdb::Vec3 p[3];
-        double length[3];
-        for (int k = 0; k < 3; ++k) {
-            for (int j = 0; j < 3; ++j) p[k][j] = mesh.vertices[t[k]][j] - q[j];
-            length[k] = std::sqrt(p[k][0] * p[k][0] + p[k][1] * p[k][1] + p[k][2] * p[k][2]);
-        }
-        const auto dot = [&](int i, int j) { return p[i][0] * p[j][0] + p[i][1] * p[j][1] + p[i][2] * p[j][2]; };
-        const double det = p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                           p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                           p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
-        const double denominator = length[0] * length[1] * length[2] + dot(0, 1) * length[2] +
-                                   dot(1, 2) * length[0] + dot(2, 0) * length[1];
-        sum += 2.0 * std::atan2(det, denominator) / (4.0 * M_PI);
-    }
-    return sum;
-}
-
 TEST(WindingNumber, ExactSumIsTheTrianglesSolidAngles) {
     const Mesh octahedron = fabvdb::test::make_octahedron({0.1, -0.2, 0.3}, 2.0, 1.5);
     for (const Mesh& mesh : {octahedron, fabvdb::test::flipped(octahedron)}) {
         const WindingNumber winding(mesh);
         const double centre = winding.exact({0.1, -0.2, 0.3});
         EXPECT_NEAR(std::abs(centre), 1.0, 1e-12);
-        EXPECT_NEAR(centre, sum_of_solid_angles(mesh, {0.1, -0.2, 0.3}), 1e-12);
+        EXPECT_NEAR(centre, fabvdb::test::winding_number(mesh, {0.1, -0.2, 0.3}), 1e-12);
     }
     std::mt19937 random(11);
     std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
@@ -71,7 +51,7 @@ TEST(WindingNumber, ExactSumIsTheTrianglesSolidAngles) {
     const WindingNumber winding(soup);
     for (int i = 0; i < 500; ++i) {
         const fabvdb::Vec3 q{1.5 * coordinate(random), 1.5 * coordinate(random), 1.5 * coordinate(random)};
-        EXPECT_NEAR(winding.exact(q), sum_of_solid_angles(soup, q), 1e-9);
+        EXPECT_NEAR(winding.exact(q), fabvdb::test::winding_number(soup, q), 1e-9);
     }
 }
 
