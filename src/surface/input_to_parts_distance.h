@@ -6,13 +6,16 @@
 //! evenly over its samples, a vertex taking its share from every triangle
 //! around it), overall and per part (the part each sample is nearest to).
 //! Input surface that the input's own solid encloses (the inner faces of
-//! overlapping shells) has no surface of the solid to reproduce: a sample
-//! more than spacing / 2 from the parts whose generalized winding number is
-//! at least 1/2, of one sign, at 0.05 × spacing in front of and behind it
-//! (along its triangle's normal, a vertex's area-weighted normal) is left out.
+//! overlapping shells, the walls of a slit narrower than 0.3 mm) has no
+//! surface of the solid to reproduce: a sample more than spacing / 2 from the
+//! parts whose generalized winding number is at least 1/2, of one sign,
+//! 0.05 × spacing behind it and in front of it (along its triangle's normal,
+//! a vertex's area-weighted normal), or at a quarter, half, three quarters
+//! or all of 0.3 mm in front, is left out.
 //! Costs one AABB tree over the parts (surface_distance.h), one winding-number
 //! tree over the input (volume/winding_number.h) and a query per sample:
-//! about area / spacing² + vertices.
+//! about area / spacing² + vertices, and up to six winding numbers per
+//! sample farther than spacing / 2 from the parts.
 #pragma once
 
 #include <vector>

@@ -8,6 +8,10 @@
 // Of an input made of two boxes, a part holding only the outer box
 // reproduces the solid when the second box lies inside the first (its
 // surface is left out), and misses it by up to 20 mm when it lies beside it.
+// Of two boxes side by side, a part holding both and the slit between them
+// reproduces the solid when the slit is narrower than 0.3 mm (no mold blade
+// is that thin), and misses the slit's walls by up to 10 mm when it is 0.5 mm
+// wide.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -81,6 +85,23 @@ TEST(InputToPartsDistance, LeavesOutSurfaceTheInputsSolidEncloses) {
     const auto apart = fabvdb::surface::input_to_parts_distance(beside, {&outer}, 0.5, progress);
     EXPECT_NEAR(apart.max, 20.0, 1e-9);
     EXPECT_EQ(apart.enclosed_samples, 0u);
+}
+
+TEST(InputToPartsDistance, LeavesOutTheWallsOfASlitNarrowerThanAMoldBlade) {
+    fabvdb::Progress progress;
+    for (const double width : {0.05, 0.2, 0.5}) {
+        const Mesh input = fabvdb::test::merged(fabvdb::test::make_box({0, 0, 0}, {10, 20, 20}),
+                                                fabvdb::test::make_box({10 + width, 0, 0}, {20 + width, 20, 20}));
+        const Mesh part = fabvdb::test::make_box({0, 0, 0}, {20 + width, 20, 20});
+        const auto d = fabvdb::surface::input_to_parts_distance(input, {&part}, 0.5, progress);
+        if (width < 0.3) {
+            EXPECT_LE(d.max, 0.25);
+            EXPECT_GT(d.enclosed_samples, 0u);
+        } else {
+            EXPECT_GT(d.max, 9.5);  // the wall's centre: 10 mm from every face of the part
+            EXPECT_EQ(d.enclosed_samples, 0u);
+        }
+    }
 }
 
 }  // namespace
