@@ -2,6 +2,7 @@
 #include "volume/trim_deep_fills.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
 
@@ -58,6 +59,37 @@ struct Columns {
     double voxel = 0;
 };
 
+//! Calls `visit(p)` at each end p (world) of a gap between the inside runs
+//! of column `c` of `original` that lies within a voxel of the input
+//! surface's zero (`surface_sampler`): input surface the sweep buries there.
+template <class Visit>
+void for_each_buried_gap_end(const Columns& columns, const std::vector<float>& original,
+                             const Sampler& surface_sampler, size_t c, Visit&& visit) {
+    const float* column = original.data() + c * columns.nz;
+    const std::vector<Run> runs = inside_runs(column, columns.nz);
+    for (size_t r = 0; r + 1 < runs.size(); ++r)
+        for (const size_t k : {runs[r].end - 1, runs[r + 1].start - 1}) {
+            const openvdb::Vec3d p = columns.world(c, zero_crossing(column, k));
+            if (std::abs(surface_sampler.wsSample(p)) < columns.voxel) visit(p);
+        }
+}
+
+//! Phase 0. Whether the sweep buries any input surface at all (when not,
+//! nothing is to be trimmed and the distance field is not needed).
+bool buries_input_surface(const Columns& columns, const std::vector<float>& original,
+                          const openvdb::FloatGrid& surface, Progress& progress) {
+    std::atomic<bool> found{false};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, columns.count), [&](const tbb::blocked_range<size_t>& range) {
+        if (found || progress.cancelled()) return;
+        const openvdb::FloatGrid::ConstAccessor surface_access = surface.getConstAccessor();
+        const Sampler surface_sampler(surface_access, surface.transform());
+        for (size_t c = range.begin(); c != range.end() && !found; ++c)
+            for_each_buried_gap_end(columns, original, surface_sampler, c, [&](const openvdb::Vec3d&) { found = true; });
+    });
+    progress.check();
+    return found;
+}
+
 //! Phase 1. Per column: how deep below the filled part's surface (`distance`,
 //! its true signed distance) the input surface at the column's gaps is
 //! buried (0: no gap bounded by input surface).
@@ -65,23 +97,16 @@ std::vector<float> buried_depths(const Columns& columns, const std::vector<float
                                  const openvdb::FloatGrid& surface, const openvdb::FloatGrid& distance,
                                  Progress& progress) {
     std::vector<float> depth(columns.count, 0.0f);
-    const size_t nz = columns.nz;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, columns.count), [&](const tbb::blocked_range<size_t>& range) {
         if (progress.cancelled()) return;
         const openvdb::FloatGrid::ConstAccessor surface_access = surface.getConstAccessor();
         const openvdb::FloatGrid::ConstAccessor distance_access = distance.getConstAccessor();
         const Sampler surface_sampler(surface_access, surface.transform());
         const Sampler distance_sampler(distance_access, distance.transform());
-        for (size_t c = range.begin(); c != range.end(); ++c) {
-            const float* column = original.data() + c * nz;
-            const std::vector<Run> runs = inside_runs(column, nz);
-            for (size_t r = 0; r + 1 < runs.size(); ++r)
-                for (const size_t k : {runs[r].end - 1, runs[r + 1].start - 1}) {
-                    const openvdb::Vec3d p = columns.world(c, zero_crossing(column, k));
-                    if (std::abs(surface_sampler.wsSample(p)) >= columns.voxel) continue;
-                    depth[c] = std::max(depth[c], -distance_sampler.wsSample(p));
-                }
-        }
+        for (size_t c = range.begin(); c != range.end(); ++c)
+            for_each_buried_gap_end(columns, original, surface_sampler, c, [&](const openvdb::Vec3d& p) {
+                depth[c] = std::max(depth[c], -distance_sampler.wsSample(p));
+            });
     });
     progress.check();
     return depth;
@@ -275,6 +300,7 @@ size_t trim_deep_fills(const std::vector<float>& original, openvdb::tools::Dense
                        float background, double min_depth, const openvdb::FloatGrid* others, Progress& progress) {
     progress.stage("sweep: fill or trim");
     const Columns columns(filled, transform);
+    if (!buries_input_surface(columns, original, surface, progress)) return 0;
     const float band = float(std::max(3.0, std::ceil(4.0 * min_depth / columns.voxel)));
     // Depth below the filled part's surface, as a true signed distance.
     const openvdb::FloatGrid::Ptr distance = signed_distance(filled, transform, background, 1.0f, band, progress);
