@@ -29,17 +29,22 @@ InputToParts input_to_parts_distance(const Mesh& input, const std::vector<const 
     }
     const SurfaceDistance distance(all);
     const volume::WindingNumber winding(input);
+    const SurfaceDistance input_distance(input);
     const double probe = 0.05 * spacing;
     // True where the input's solid lies on both sides of the surface at
     // `point`, whose normal (any length) is `normal`: behind it, and in front
-    // of it either at once or across a slit narrower than kClosedSlit.
+    // of it either at once or across a slit narrower than kClosedSlit. A slit
+    // needs other input surface inside the ball of that diameter standing on
+    // the point, which one nearest-point query rules out on most surface.
     const auto enclosed = [&](const Vec3& point, const Vec3& normal) {
         const double length = norm(normal);
         if (!(length > 0)) return false;
         const Vec3 unit = (1.0 / length) * normal;
         double front = winding(point + probe * unit);
-        for (int quarter = 4; quarter >= 1 && std::abs(front) < 0.5; --quarter)
-            front = winding(point + (0.25 * quarter * kClosedSlit) * unit);
+        const double radius = 0.5 * kClosedSlit;
+        if (std::abs(front) < 0.5 && input_distance.nearest(point + radius * unit).distance < (1 - 1e-3) * radius)
+            for (int quarter = 4; quarter >= 1 && std::abs(front) < 0.5; --quarter)
+                front = winding(point + (0.25 * quarter * kClosedSlit) * unit);
         if (std::abs(front) < 0.5) return false;  // most surface: open space in front
         const double back = winding(point - probe * unit);
         return front > 0 ? back >= 0.5 : back <= -0.5;

@@ -12,10 +12,13 @@
 //! 0.05 × spacing behind it and in front of it (along its triangle's normal,
 //! a vertex's area-weighted normal), or at a quarter, half, three quarters
 //! or all of 0.3 mm in front, is left out.
-//! Costs one AABB tree over the parts (surface_distance.h), one winding-number
-//! tree over the input (volume/winding_number.h) and a query per sample:
-//! about area / spacing² + vertices, and up to six winding numbers per
-//! sample farther than spacing / 2 from the parts.
+//! Costs one AABB tree over the parts and one over the input
+//! (surface_distance.h), one winding-number tree over the input
+//! (volume/winding_number.h) and a query per sample: about area / spacing² +
+//! vertices; per sample farther than spacing / 2 from the parts, a winding
+//! number in front, a nearest-point query on the input where that is open,
+//! up to four more winding numbers where other input surface comes within
+//! 0.3 mm in front, and one behind where the front is solid.
 #pragma once
 
 #include <vector>
