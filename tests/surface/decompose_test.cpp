@@ -113,6 +113,7 @@ TEST(Decompose, SeparateBallsGetPartsOfTheirOwn) {
         if (known < 0) known = side;
         EXPECT_EQ(known, side) << "part " << part_of[t] << " spans both balls";
     }
+    std::filesystem::remove_all(folder);
 }
 
 TEST(Decompose, ThinPlateIsOneSolidPart) {
