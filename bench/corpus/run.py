@@ -147,6 +147,21 @@ def encloses_nothing(facts):
     return thickness is not None and diagonal is not None and thickness < 1e-4 * diagonal
 
 
+def threemf_repeated_corner_triangles(path):
+    """Triangles of a 3MF file whose corners repeat a vertex index, counted in
+    its XML: the 3MF core specification forbids them and lib3mf drops them as
+    it reads, so fabvdb never sees them."""
+    import zipfile
+    count = 0
+    with zipfile.ZipFile(path) as archive:
+        for name in archive.namelist():
+            if name.endswith(".model"):
+                text = archive.read(name).decode("utf-8", "replace")
+                for a, b, c in re.findall(r'<triangle\s+v1="(\d+)"\s+v2="(\d+)"\s+v3="(\d+)"', text):
+                    count += a == b or b == c or a == c
+    return count
+
+
 def first_line(text):
     for line in text.splitlines():
         if line.startswith("fabvdb"):
@@ -197,12 +212,13 @@ def process_model(row, args, runner, with_mold):
         try:
             rep = json.load(open(os.path.join(work, "info.json")))
             warn = [l for l in r["stderr"].splitlines() if "warn" in l.lower()]
-            if rep.get("triangles") != row["triangles"]:
+            dropped = threemf_repeated_corner_triangles(src) if src.lower().endswith(".3mf") else 0
+            if rep.get("triangles") != row["triangles"] - dropped:
                 cell("info", "FAIL", "%s triangles, manifest %d" % (rep.get("triangles"), row["triangles"]), r)
             else:
-                cell("info", "ok", "%d tri, closed %s%s" % (rep["triangles"], rep.get("closed"),
-                                                           ", %d warning(s)" % len(warn) if warn else ""), r,
-                     warnings=warn)
+                cell("info", "ok", "%d tri%s, closed %s%s" % (
+                    rep["triangles"], " (%d with a repeated corner dropped by lib3mf)" % dropped if dropped else "",
+                    rep.get("closed"), ", %d warning(s)" % len(warn) if warn else ""), r, warnings=warn)
         except (OSError, ValueError) as e:
             cell("info", "FAIL", "exit 0 but no readable report (%s)" % e, r)
     else:

@@ -1,6 +1,7 @@
-// The share of a surface that encloses volume: all of a closed sphere, most
-// of a sphere with a hole, almost none of an open sheet, a hemispherical
-// bowl (a single range scan of a ball) or a soup of unrelated triangles.
+// The share of a surface that encloses volume: all of a closed sphere (also
+// stored twice, or crossing another), most of a sphere with a hole, almost
+// none of an open sheet, a hemispherical bowl (a single range scan of a
+// ball), a soup of unrelated triangles or a bowl wound five times over.
 #include <gtest/gtest.h>
 
 #include "support/defect_shapes.h"
@@ -39,6 +40,22 @@ TEST(EnclosedShare, ClosedSurfacesEncloseAll) {
     EXPECT_GE(share_of(fabvdb::test::make_sphere({0, 0, 0}, 0.02, 3)), 0.999);
 }
 
+// w = 2 inside a sphere stored twice, and where two spheres overlap.
+TEST(EnclosedShare, OverlappingAndRepeatedClosedShellsEncloseAll) {
+    const Mesh sphere = fabvdb::test::make_sphere({1, 2, 3}, 10.0, 4);
+    Mesh twice = sphere;
+    Mesh crossing = sphere;
+    const Mesh other = fabvdb::test::make_sphere({8, 2, 3}, 10.0, 4);
+    for (const Mesh* add : {&sphere, &other}) {
+        Mesh& into = add == &sphere ? twice : crossing;
+        const uint32_t base = uint32_t(into.vertices.size());
+        into.vertices.insert(into.vertices.end(), add->vertices.begin(), add->vertices.end());
+        for (fabvdb::Triangle t : add->triangles) into.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+    EXPECT_GE(share_of(twice), 0.999);
+    EXPECT_GE(share_of(crossing), 0.999);
+}
+
 TEST(EnclosedShare, ScanWithAHoleEnclosesMost) {
     const Mesh open_bottom = sphere_part([](double z) { return z > -8.0; });
     EXPECT_GT(share_of(open_bottom), 0.5);
@@ -63,6 +80,16 @@ TEST(EnclosedShare, SheetsBowlsAndSoupsEncloseNothing) {
     EXPECT_LT(share_of(fabvdb::test::make_triangle_soup(100, 100.0, 3.0, 18)), 0.05);
     // Larger triangles that cross each other: still far under the share of a solid.
     EXPECT_LT(share_of(fabvdb::test::make_triangle_soup(100, 100.0, 15.0, 7)), 0.05);
+
+    // The same bowl stored five times: w = ±2.5 beside it, past 0.9 but
+    // nowhere near 1 nor whole (as in a tangle of inconsistently wound pieces).
+    Mesh five;
+    for (int copy = 0; copy < 5; ++copy) {
+        const uint32_t base = uint32_t(five.vertices.size());
+        five.vertices.insert(five.vertices.end(), bowl.vertices.begin(), bowl.vertices.end());
+        for (fabvdb::Triangle t : bowl.triangles) five.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+    EXPECT_LT(share_of(five), 0.05);
 }
 
 }  // namespace
