@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -61,12 +60,13 @@ double enclosed_share(const Mesh& mesh, const WindingNumber& winding, double ins
     const size_t probes = (count + stride - 1) / stride;
     // Per probe: 1 encloses, 0 does not, 2 reaches past one shell's ceiling
     // (decided below, whole numbers or not).
+    std::vector<Probe> probe(probes);
     std::vector<char> verdict(probes, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, probes), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
-            const Probe probe = probe_of(mesh, mesh.triangles[i * stride]);
-            if (probe.twice_area == 0.0) continue;
-            const double high = std::max(winding(probe.front), winding(probe.back));
+            probe[i] = probe_of(mesh, mesh.triangles[i * stride]);
+            if (probe[i].twice_area == 0.0) continue;
+            const double high = std::max(winding(probe[i].front), winding(probe[i].back));
             verdict[i] = high < inside ? 0 : high <= one_shell_ceiling ? 1 : 2;
         }
     });
@@ -75,8 +75,7 @@ double enclosed_share(const Mesh& mesh, const WindingNumber& winding, double ins
         tbb::parallel_for(tbb::blocked_range<size_t>(0, probes), [&](const tbb::blocked_range<size_t>& range) {
             for (size_t i = range.begin(); i != range.end(); ++i) {
                 if (verdict[i] != 2) continue;
-                const Probe probe = probe_of(mesh, mesh.triangles[i * stride]);
-                const double front = accurate(probe.front), back = accurate(probe.back);
+                const double front = accurate(probe[i].front), back = accurate(probe[i].back);
                 verdict[i] = whole(front) && whole(back) && std::round(std::min(front, back)) >= 0.0;
             }
         });
@@ -86,9 +85,8 @@ double enclosed_share(const Mesh& mesh, const WindingNumber& winding, double ins
         tbb::blocked_range<size_t>(0, probes), Sums{0.0, 0.0},
         [&](const tbb::blocked_range<size_t>& range, Sums sums) {
             for (size_t i = range.begin(); i != range.end(); ++i) {
-                const double twice_area = probe_of(mesh, mesh.triangles[i * stride]).twice_area;
-                sums.second += twice_area;
-                if (verdict[i] == 1) sums.first += twice_area;
+                sums.second += probe[i].twice_area;
+                if (verdict[i] == 1) sums.first += probe[i].twice_area;
             }
             return sums;
         },

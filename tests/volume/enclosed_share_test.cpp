@@ -43,15 +43,8 @@ TEST(EnclosedShare, ClosedSurfacesEncloseAll) {
 // w = 2 inside a sphere stored twice, and where two spheres overlap.
 TEST(EnclosedShare, OverlappingAndRepeatedClosedShellsEncloseAll) {
     const Mesh sphere = fabvdb::test::make_sphere({1, 2, 3}, 10.0, 4);
-    Mesh twice = sphere;
-    Mesh crossing = sphere;
-    const Mesh other = fabvdb::test::make_sphere({8, 2, 3}, 10.0, 4);
-    for (const Mesh* add : {&sphere, &other}) {
-        Mesh& into = add == &sphere ? twice : crossing;
-        const uint32_t base = uint32_t(into.vertices.size());
-        into.vertices.insert(into.vertices.end(), add->vertices.begin(), add->vertices.end());
-        for (fabvdb::Triangle t : add->triangles) into.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-    }
+    const Mesh twice = fabvdb::test::merged(sphere, sphere);
+    const Mesh crossing = fabvdb::test::merged(sphere, fabvdb::test::make_sphere({8, 2, 3}, 10.0, 4));
     EXPECT_GE(share_of(twice), 0.999);
     EXPECT_GE(share_of(crossing), 0.999);
 }
@@ -83,12 +76,8 @@ TEST(EnclosedShare, SheetsBowlsAndSoupsEncloseNothing) {
 
     // The same bowl stored five times: w = ±2.5 beside it, past 0.9 but
     // nowhere near 1 nor whole (as in a tangle of inconsistently wound pieces).
-    Mesh five;
-    for (int copy = 0; copy < 5; ++copy) {
-        const uint32_t base = uint32_t(five.vertices.size());
-        five.vertices.insert(five.vertices.end(), bowl.vertices.begin(), bowl.vertices.end());
-        for (fabvdb::Triangle t : bowl.triangles) five.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-    }
+    Mesh five = bowl;
+    for (int copy = 1; copy < 5; ++copy) five = fabvdb::test::merged(five, bowl);
     EXPECT_LT(share_of(five), 0.05);
 }
 
