@@ -1,5 +1,5 @@
-//! Graph cut with Boost.Graph's boykov_kolmogorov_max_flow, then the
-//! component-graph fix-up with Dijkstra searches from the two fixed roots.
+//! Graph cut with MinCut (Boykov–Kolmogorov), then the component-graph
+//! fix-up with Dijkstra searches from the two fixed roots.
 #include "surface/parting_line.h"
 
 #include <algorithm>
@@ -7,131 +7,77 @@
 #include <memory>
 #include <tuple>
 
-// Boost.Graph's edge iterators trip GCC's -Wmaybe-uninitialized (false positive).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <boost/graph/compressed_sparse_row_graph.hpp>
-#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
-#pragma GCC diagnostic pop
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "core/vec3_ops.h"
+#include "surface/min_cut.h"
 
 namespace fabvdb::surface {
 
 namespace {
 
-using Graph = boost::compressed_sparse_row_graph<boost::directedS>;
-using GraphEdge = boost::graph_traits<Graph>::edge_descriptor;
-
-//! The flow network of one part surface, in compressed sparse rows (built in
-//! one pass: a few allocations, not one per vertex). Its structure and the
-//! binary capacities do not depend on the direction, so one network serves
-//! every candidate: only the terminal capacities are set per direction.
+//! The flow network of one part surface: a node per surface triangle, an
+//! edge per pair of adjacent triangles (the surface's adjacency rows are the
+//! arcs). Its structure and the binary capacities do not depend on the
+//! direction, so one network serves every candidate: only the terminal
+//! capacities are set per direction.
 class CutNetwork {
 public:
-    explicit CutNetwork(const PartSurface& s) : s_(s), n_(s.size()) {
-        // Out-edges in vertex order: each surface triangle's to the source,
-        // to the sink and to its neighbours; then the source's and the
-        // sink's to every triangle. An edge's index is its position.
-        first_out_.resize(n_);
-        size_t m = 2 * n_;
-        for (size_t i = 0; i < n_; m += 2 + s.adjacent(i).size(), ++i) first_out_[i] = m - 2 * n_;
-        std::vector<std::pair<size_t, size_t>> edges;
-        edges.reserve(m);
-        for (size_t i = 0; i < n_; ++i) {
-            edges.emplace_back(i, n_);
-            edges.emplace_back(i, n_ + 1);
-            for (uint32_t j : s.adjacent(i)) edges.emplace_back(i, j);
-        }
-        for (size_t terminal = n_; terminal < n_ + 2; ++terminal)
-            for (size_t i = 0; i < n_; ++i) edges.emplace_back(terminal, i);
-        graph_ = Graph(boost::edges_are_sorted, edges.begin(), edges.end(), n_ + 2);
-        capacity_.assign(m, 0.0);
-        residual_.assign(m, 0.0);
-        std::vector<size_t> reverse(m);
-        const auto pair = [&](size_t a, size_t b) {
-            reverse[a] = b;
-            reverse[b] = a;
-        };
-        const size_t from_source = m - 2 * n_, from_sink = m - n_;
-        for (size_t i = 0; i < n_; ++i) {
-            size_t at = first_out_[i];
-            pair(at, from_source + i);
-            pair(at + 1, from_sink + i);
-            at += 2;
-            const PartSurface::Neighbours around = s.adjacent(i);
-            for (size_t k = 0; k < around.size(); ++k, ++at) {
-                const uint32_t j = around.first[k];
-                if (j < i) continue;  // paired from j's side
-                // The k-th entry j of i's list pairs with the entry i of j's
-                // list of the same rank among equal entries.
-                const size_t rank = size_t(std::count(around.begin(), around.begin() + k, j));
-                const size_t back = first_out_[j] + 2 + nth_position(s.adjacent(j), uint32_t(i), rank);
-                const double w = std::max(0.0, dot(s.normal[i], s.normal[j]));
-                capacity_[at] = capacity_[back] = w;
-                pair(at, back);
-            }
-        }
-        // The reverse of edge e as a descriptor: (source of reverse[e], reverse[e]).
-        reverse_edge_.resize(m);
-        for (size_t e = 0; e < m; ++e) reverse_edge_[reverse[e]] = GraphEdge(edges[e].first, e);
+    explicit CutNetwork(const PartSurface& s) : s_(s), cut_(s.adjacency_start, s.adjacency, sisters(s)) {
+        for (uint32_t i = 0; i < s.size(); ++i)
+            for (uint32_t a = s.adjacency_start[i]; a < s.adjacency_start[i + 1]; ++a)
+                if (s.adjacency[a] > i) cut_.set_edge_capacity(a, capacity(i, s.adjacency[a]));
+        terminal_.resize(s.size());
     }
 
     //! After the normals of these surface triangles changed: their edges' capacities.
     void update(const std::vector<uint32_t>& triangles) {
-        for (uint32_t i : triangles) {
-            size_t at = first_out_[i] + 2;
-            for (uint32_t j : s_.adjacent(i)) {
-                const double w = std::max(0.0, dot(s_.normal[std::min(i, j)], s_.normal[std::max(i, j)]));
-                capacity_[at] = capacity_[reverse_edge_[at].idx] = w;
-                ++at;
-            }
-        }
+        for (uint32_t i : triangles)
+            for (uint32_t a = s_.adjacency_start[i]; a < s_.adjacency_start[i + 1]; ++a)
+                cut_.set_edge_capacity(a, capacity(i, s_.adjacency[a]));
     }
 
     //! Per surface triangle: in M⁺ for direction d.
     std::vector<char> labels(const Vec3& d) {
-        const size_t from_source = capacity_.size() - 2 * n_;
-        for (size_t i = 0; i < n_; ++i) {
-            const double facing = dot(s_.normal[i], d);
-            const bool inner = s_.kind[i] == PartSurface::inner;
-            // 1 + n·d and 1 − n·d less their common part 1 − |n·d|: the same
-            // minimum cut, with far less flow to push.
-            capacity_[from_source + i] = inner ? 0.0 : std::max(0.0, 2.0 * facing);
-            capacity_[first_out_[i] + 1] = inner ? 0.0 : std::max(0.0, -2.0 * facing);
-        }
-        std::vector<boost::default_color_type> color(n_ + 2);
-        std::vector<long> distance(n_ + 2, 0);
-        std::vector<GraphEdge> predecessor(n_ + 2);
-        const auto edge_index = boost::get(boost::edge_index, graph_);
-        boost::boykov_kolmogorov_max_flow(
-            graph_, boost::make_iterator_property_map(capacity_.begin(), edge_index),
-            boost::make_iterator_property_map(residual_.begin(), edge_index),
-            boost::make_iterator_property_map(reverse_edge_.begin(), edge_index),
-            boost::make_iterator_property_map(predecessor.begin(), boost::get(boost::vertex_index, graph_)),
-            boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, graph_)),
-            boost::make_iterator_property_map(distance.begin(), boost::get(boost::vertex_index, graph_)),
-            boost::get(boost::vertex_index, graph_), n_, n_ + 1);
-        std::vector<char> upper(n_);
-        for (size_t i = 0; i < n_; ++i) upper[i] = color[i] != boost::white_color;
+        for (size_t i = 0; i < s_.size(); ++i)
+            // 1 + n·d (for M⁻) and 1 − n·d (for M⁺) less their common part
+            // 1 − |n·d|: the same minimum cut, with far less flow to push.
+            terminal_[i] = s_.kind[i] == PartSurface::inner ? 0.0 : 2.0 * dot(s_.normal[i], d);
+        std::vector<char> upper;
+        cut_.solve(terminal_, upper);
         return upper;
     }
 
 private:
-    static size_t nth_position(PartSurface::Neighbours list, uint32_t value, size_t rank) {
-        for (size_t k = 0; k < list.size(); ++k)
-            if (list.first[k] == value && rank-- == 0) return k;
-        return list.size();  // not reached: the adjacency is symmetric
+    //! The binary cost max(0, n_i·n_j), the same from either side.
+    double capacity(uint32_t i, uint32_t j) const {
+        return std::max(0.0, dot(s_.normal[std::min(i, j)], s_.normal[std::max(i, j)]));
+    }
+
+    //! The reverse of each arc: the k-th entry j in i's row pairs with the
+    //! entry i in j's row of the same rank among equal entries.
+    static std::vector<uint32_t> sisters(const PartSurface& s) {
+        std::vector<uint32_t> sister(s.adjacency.size());
+        for (uint32_t i = 0; i < s.size(); ++i) {
+            const uint32_t first = s.adjacency_start[i], last = s.adjacency_start[i + 1];
+            for (uint32_t a = first; a < last; ++a) {
+                const uint32_t j = s.adjacency[a];
+                if (j < i) continue;  // paired from j's side
+                size_t rank = size_t(std::count(s.adjacency.begin() + first, s.adjacency.begin() + a, j));
+                uint32_t back = s.adjacency_start[j];
+                for (;; ++back)
+                    if (s.adjacency[back] == i && rank-- == 0) break;
+                sister[a] = back;
+                sister[back] = a;
+            }
+        }
+        return sister;
     }
 
     const PartSurface& s_;
-    const size_t n_;
-    Graph graph_;
-    std::vector<double> capacity_, residual_;
-    std::vector<GraphEdge> reverse_edge_;
-    std::vector<size_t> first_out_;  //!< per triangle: its first out-edge (to the source; then the sink's)
+    MinCut cut_;
+    std::vector<double> terminal_;
 };
 
 //! Makes the M⁺ and M⁻ labels each one connected component (§3.4.4).
