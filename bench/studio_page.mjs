@@ -48,8 +48,12 @@ try {
         const run = async (op, args) => { await new Promise((r) => setTimeout(r, pause)); s.send(op, args); await wait(); };
         const edit = async (e) => { await new Promise((r) => setTimeout(r, pause)); s.edit(e); await wait(); };
         const radius = s.viewer.size / 40;
-        const boundary = [];
-        for (const l of s.state.boundaries) for (let i = 0; i < l.points.length; i += 3 * Math.max(1, Math.floor(l.points.length / 9))) boundary.push(l.points.slice(i, i + 3));
+        // Boundary points to stroke at, and every point of the lines (how deep in its part a cut lies).
+        const boundary = [], boundaryPoints = [];
+        for (const l of s.state.boundaries) {
+          for (let i = 0; i < l.points.length; i += 3 * Math.max(1, Math.floor(l.points.length / 9))) boundary.push(l.points.slice(i, i + 3));
+          for (let i = 0; i < l.points.length; i += 3) boundaryPoints.push(l.points.slice(i, i + 3));
+        }
         const records = [];
         const take = (kind) => { const l = s.latencies[s.latencies.length - 1]; records.push({ kind, ...l }); };
         for (let r = 0; r < repeat; ++r) {
@@ -61,20 +65,21 @@ try {
           await edit({ type: 'smooth', points: [p], radius });
           if (s.latencies.length > b2) { take('smooth'); await run('undo'); }
         }
-        // Cuts around patches deep in the largest part, and the merges back.
+        // Cuts around patches deep in the largest part (each ring within the
+        // part: 0.4 of its centre's depth), and the merges back.
         const largest = [...s.state.parts].sort((a, b) => b.triangles - a.triangles)[0].id;
         const deep = [];
         for (let t = 0; t < s.labels.length; ++t) {
           if (s.labels[t] !== largest) continue;
           const c = s.viewer.centroid(t);
           let d = Infinity;
-          for (const b of boundary) d = Math.min(d, Math.hypot(c[0] - b[0], c[1] - b[1], c[2] - b[2]));
+          for (const b of boundaryPoints) d = Math.min(d, Math.hypot(c[0] - b[0], c[1] - b[1], c[2] - b[2]));
           deep.push([d, t]);
         }
         deep.sort((a, b) => b[0] - a[0]);
         const pos = s.viewer.model.geometry.getAttribute('position').array;
         for (let r = 0; r < repeat; ++r) {
-          const t = deep[Math.floor(r * Math.min(deep.length, 50) / repeat)][1];
+          const [depth, t] = deep[Math.floor(r * Math.min(deep.length, 50) / repeat)];
           const c = s.viewer.centroid(t);
           const a = [0, 1, 2].map((k) => pos[9 * t + k]), b = [0, 1, 2].map((k) => pos[9 * t + 3 + k]), e = [0, 1, 2].map((k) => pos[9 * t + 6 + k]);
           const sub = (x, y) => x.map((v, i) => v - y[i]);
@@ -83,7 +88,7 @@ try {
           const n = unit(cross(sub(b, a), sub(e, a)));
           const u = unit(Math.abs(n[0]) < 0.9 ? cross(n, [1, 0, 0]) : cross(n, [0, 1, 0]));
           const v = cross(n, u);
-          const ring = Math.min(0.4 * deep[0][0], 3 * radius);
+          const ring = Math.min(0.4 * depth, 3 * radius);
           const points = [];
           for (let i = 0; i < 12; ++i) {
             const w = 2 * Math.PI * i / 12;
