@@ -9,10 +9,11 @@
 //! reach the sink in the residual graph, the same set for every maximum flow,
 //! so the labels do not depend on the order in which paths are found (the
 //! same labels as Boost's boykov_kolmogorov_max_flow, whose sink tree it is).
-//! Costs: memory linear in nodes and arcs, reused over solves; no allocation
-//! in a solve. Written for the parting lines' networks (a node per part
-//! surface triangle, three arcs each), on which the studio's cut edits take
-//! about half the time they took with Boost's generic implementation.
+//! Costs: memory linear in nodes and arcs, reused over solves (a solve
+//! allocates only the labels it returns). Written for the parting lines'
+//! networks (a node per part-surface triangle, three arcs each), on which
+//! the studio's cut edits take about half the time they took with Boost's
+//! generic implementation.
 #pragma once
 
 #include <cstddef>

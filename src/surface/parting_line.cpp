@@ -190,9 +190,16 @@ void connect_patches(const Shell& shell, const MoldabilityTerms& terms, const Pa
     std::vector<int> previous[2];
     for (int c : order) {
         if (fixed[c]) continue;
-        search(0, c, distance[0], previous[0]);
-        search(1, c, distance[1], previous[1]);
-        const int side = distance[1][c] <= distance[0][c] ? 1 : 0;
+        // From the root of c's own label first: at no cost, that side wins
+        // (ties go to M⁺, and reaching c from the other side costs at least
+        // its projected area), and the other search is not needed.
+        const int own = label[c] ? 1 : 0;
+        search(own, c, distance[own], previous[own]);
+        int side = own;
+        if (!(distance[own][c] == 0 && (own == 1 || projected[c] > 0))) {
+            search(1 - own, c, distance[1 - own], previous[1 - own]);
+            side = distance[1][c] <= distance[0][c] ? 1 : 0;
+        }
         for (int x = c; x >= 0 && !fixed[x]; x = previous[side][x]) {
             label[x] = char(side);
             fixed[x] = 1;
