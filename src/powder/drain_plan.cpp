@@ -94,7 +94,7 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     plan.baseline_routine_residual = found.baseline_routine_residual;
     plan.first_gravity = first.gravity;
     clock.lap("hole search");
-    if (options.inspect) options.inspect(model, candidates);
+    if (options.inspect) options.inspect(model, candidates, plan);
     return plan;
 }
 

@@ -27,6 +27,8 @@
 
 namespace fabvdb::powder {
 
+struct DrainPlan;
+
 struct DrainPlanOptions {
     double hole_diameter = 4.0;
     double nominal_wall = 3.0;
@@ -40,10 +42,12 @@ struct DrainPlanOptions {
     size_t powder_samples = 60000;
     HoleSearchOptions search;
     KeepOut keep_out;
-    //! If set, called once the holes are chosen with the model and every
-    //! candidate site (both live only during the call): for validation
-    //! tools that evaluate hole sets of their own.
-    std::function<void(const DrainabilityModel&, const std::vector<DrainHole>& candidates)> inspect;
+    //! If set, called once the holes are chosen with the model, every
+    //! candidate site and the plan so far (holes, baseline and routine;
+    //! the model and sites live only during the call): for validation
+    //! tools that evaluate hole sets and routines of their own.
+    std::function<void(const DrainabilityModel&, const std::vector<DrainHole>& candidates, const DrainPlan& plan)>
+        inspect;
 };
 
 struct DrainPlan {

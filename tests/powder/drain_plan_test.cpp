@@ -109,7 +109,8 @@ TEST(DrainPlan, ShaftBehindAFlatTubeKeepsItsPowderTurnAfterTurn) {
     options.orientations = {{0, 0, 1}};
     DrainHole hole;
     double predicted = -1.0;
-    options.inspect = [&](const fabvdb::powder::DrainabilityModel& model, const std::vector<DrainHole>& candidates) {
+    options.inspect = [&](const fabvdb::powder::DrainabilityModel& model, const std::vector<DrainHole>& candidates,
+                          const fabvdb::powder::DrainPlan&) {
         // The candidate nearest the top of the tube's far end, drilled upward.
         double nearest = 1e9;
         for (const DrainHole& candidate : candidates) {

@@ -23,7 +23,8 @@ void with_drainability_model(const HollowPart& part, size_t powder_samples, Chec
     options.orientations = {{0, 0, -1}};
     options.search.hole_count = 1;
     bool ran = false;
-    options.inspect = [&](const powder::DrainabilityModel& model, const std::vector<powder::DrainHole>& candidates) {
+    options.inspect = [&](const powder::DrainabilityModel& model, const std::vector<powder::DrainHole>& candidates,
+                          const powder::DrainPlan&) {
         ran = true;
         check(model, candidates);
     };
