@@ -125,6 +125,11 @@ double simulate_routine(const openvdb::FloatGrid& shell, const std::vector<fabvd
     return fabvdb::powder::simulate_sandpile(shell, drills, options, progress).residual_fraction();
 }
 
+//! The simulation's operator routine of `seed`: as printed, then 9 turns drawn from the 162 directions.
+std::vector<fabvdb::Vec3> simulation_routine(int seed) {
+    return fabvdb::powder::operator_routine({0, 0, -1}, fabvdb::thesis_directions().directions, 10, uint64_t(seed));
+}
+
 //! The mean simulated residual fraction over the routines of seeds 1 to `routines`.
 double simulate(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powder::DrainHole>& holes, int routines,
                 const std::string& model, const Rules& rules, SimulationCache& cache) {
@@ -133,10 +138,7 @@ double simulate(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powde
     if (cache.find(key, cached)) return cached;
     double sum = 0.0;
     for (int seed = 1; seed <= routines; ++seed)
-        sum += simulate_routine(
-            shell, holes,
-            fabvdb::powder::operator_routine({0, 0, -1}, fabvdb::thesis_directions().directions, 10, uint64_t(seed)),
-            rules);
+        sum += simulate_routine(shell, holes, simulation_routine(seed), rules);
     cache.add(key, sum / routines);
     return sum / routines;
 }
@@ -186,14 +188,13 @@ double spearman(const std::vector<double>& x, const std::vector<double>& y) {
     return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : 0.0;
 }
 
-//! The simulation's routines of seeds 1 to `routines` (as printed, then 9
-//! turns of the 162 directions) as the model's routines of later turns.
+//! The simulation's routines of seeds 1 to `routines` as the model's
+//! routines of later turns.
 std::vector<fabvdb::powder::Routine> simulated_routines(const fabvdb::powder::DrainabilityModel& model, int routines) {
     const std::vector<fabvdb::Vec3>& directions = fabvdb::thesis_directions().directions;
     std::vector<fabvdb::powder::Routine> result;
     for (int seed = 1; seed <= routines; ++seed) {
-        const std::vector<fabvdb::Vec3> gravities =
-            fabvdb::powder::operator_routine({0, 0, -1}, directions, 10, uint64_t(seed));
+        const std::vector<fabvdb::Vec3> gravities = simulation_routine(seed);
         fabvdb::powder::Routine routine;
         for (size_t turn = 1; turn < gravities.size(); ++turn) {
             uint32_t best = 0;
