@@ -22,6 +22,8 @@
 // repose of the simulated grains; the model keeps 35°), --sim-window N
 // (cells over which a pile's slope is measured: the toppling neighbourhood),
 // --sim-cell MM (grain cell size, default 1).
+// --trace prints, for the optimized holes and each of the R routines, the
+// residual after every turn by the model and by the simulation.
 // --sim-cache FILE keeps each simulated residual under the exact hole set,
 // routine and rules, and reuses it: the simulation is most of the bench's
 // time and does not depend on the model, so a change to the model is
@@ -30,7 +32,7 @@
 // A model is a file in the shared meshes folder, or a path (e.g. a corpus
 // mesh). A table of every model's figures closes the output.
 // Usage: bench_drain [--sets N] [--routines R] [--size MM] [--holes auto|K] [--sim-repose DEG]
-//                    [--sim-window N] [--sim-cell MM] [--sim-cache FILE] [models...]
+//                    [--sim-window N] [--sim-cell MM] [--sim-cache FILE] [--trace] [models...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -112,8 +114,9 @@ struct Rules {
     }
 };
 
-double simulate_routine(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powder::DrainHole>& holes,
-                        const std::vector<fabvdb::Vec3>& routine, const Rules& rules) {
+fabvdb::powder::SandpileResult simulate_turns(const openvdb::FloatGrid& shell,
+                                              const std::vector<fabvdb::powder::DrainHole>& holes,
+                                              const std::vector<fabvdb::Vec3>& routine, const Rules& rules) {
     std::vector<fabvdb::powder::SandpileHole> drills;
     for (const auto& hole : holes) drills.push_back({hole.center, hole.axis, hole.diameter, hole.depth});
     fabvdb::powder::SandpileOptions options;
@@ -122,7 +125,12 @@ double simulate_routine(const openvdb::FloatGrid& shell, const std::vector<fabvd
     options.slope_window = rules.window;
     options.routine = routine;
     fabvdb::Progress progress;
-    return fabvdb::powder::simulate_sandpile(shell, drills, options, progress).residual_fraction();
+    return fabvdb::powder::simulate_sandpile(shell, drills, options, progress);
+}
+
+double simulate_routine(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powder::DrainHole>& holes,
+                        const std::vector<fabvdb::Vec3>& routine, const Rules& rules) {
+    return simulate_turns(shell, holes, routine, rules).residual_fraction();
 }
 
 //! The simulation's operator routine of `seed`: as printed, then 9 turns drawn from the 162 directions.
@@ -240,6 +248,7 @@ int main(int argc, char** argv) {
     double size = 80.0;
     Rules rules;
     std::string cache_path;
+    bool trace = false;
     for (int a = 1; a < argc; ++a) {
         auto next = [&]() -> const char* {
             if (a + 1 >= argc) {
@@ -265,6 +274,8 @@ int main(int argc, char** argv) {
             rules.cell = std::atof(next());
         else if (std::strcmp(argv[a], "--sim-cache") == 0)
             cache_path = next();
+        else if (std::strcmp(argv[a], "--trace") == 0)
+            trace = true;
         else
             models.push_back(argv[a]);
     }
@@ -285,6 +296,8 @@ int main(int argc, char** argv) {
         std::vector<double> predicted, paired;
         double paired_optimized = 0.0, paired_baseline = 0.0;
         double inspect_seconds = 0.0;
+        // Per simulated routine: the model's residual fraction after each turn (--trace).
+        std::vector<std::vector<double>> model_turns;
         options.plan.inspect = [&](const fabvdb::powder::DrainabilityModel& model,
                                    const std::vector<fabvdb::powder::DrainHole>& candidates,
                                    const fabvdb::powder::DrainPlan& plan) {
@@ -294,6 +307,16 @@ int main(int argc, char** argv) {
                 return model.evaluate(model.drain(holes), same).residual_fraction();
             };
             paired_optimized = through_same(plan.holes);
+            if (trace) {
+                const fabvdb::powder::HoleSetDrain drained = model.drain(plan.holes);
+                for (const fabvdb::powder::Routine& routine : same) {
+                    model_turns.emplace_back();
+                    for (size_t t = 0; t <= routine.size(); ++t) {
+                        const fabvdb::powder::Routine prefix(routine.begin(), routine.begin() + long(t));
+                        model_turns.back().push_back(model.evaluate(drained, {prefix}).residual_fraction());
+                    }
+                }
+            }
             paired_baseline = through_same(plan.baseline);
             std::mt19937_64 generator(7);
             for (int s = 0; s < set_count; ++s) {
@@ -339,6 +362,15 @@ int main(int argc, char** argv) {
         }
         row.simulated = simulate(*result.shell, plan.holes, routines, label, rules, cache);
         row.simulated_baseline = simulate(*result.shell, plan.baseline, routines, label, rules, cache);
+        for (size_t r = 0; r < model_turns.size(); ++r) {
+            const fabvdb::powder::SandpileResult turns =
+                simulate_turns(*result.shell, plan.holes, simulation_routine(int(r) + 1), rules);
+            std::printf("  routine %zu, residual %% after each turn, model / simulated:", r + 1);
+            for (size_t t = 0; t < model_turns[r].size() && t < turns.residual_after_turn.size(); ++t)
+                std::printf(" %.2f/%.2f", 100 * model_turns[r][t],
+                            100 * turns.residual_after_turn[t] / turns.initial_volume);
+            std::printf("\n");
+        }
         std::vector<fabvdb::Vec3> routine{plan.first_gravity};
         routine.insert(routine.end(), plan.routine.begin(), plan.routine.end());
         row.simulated_routine = simulate(*result.shell, plan.holes, routine, label, rules, cache);
