@@ -128,25 +128,26 @@ fabvdb::powder::SandpileResult simulate_turns(const openvdb::FloatGrid& shell,
     return fabvdb::powder::simulate_sandpile(shell, drills, options, progress);
 }
 
-double simulate_routine(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powder::DrainHole>& holes,
-                        const std::vector<fabvdb::Vec3>& routine, const Rules& rules) {
-    return simulate_turns(shell, holes, routine, rules).residual_fraction();
-}
-
 //! The simulation's operator routine of `seed`: as printed, then 9 turns drawn from the 162 directions.
 std::vector<fabvdb::Vec3> simulation_routine(int seed) {
     return fabvdb::powder::operator_routine({0, 0, -1}, fabvdb::thesis_directions().directions, 10, uint64_t(seed));
 }
 
-//! The mean simulated residual fraction over the routines of seeds 1 to `routines`.
+//! The mean simulated residual fraction over the routines of seeds 1 to
+//! `routines`. With `turns`, each routine's result is kept there (the
+//! cache then cannot answer: it keeps the mean alone).
 double simulate(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powder::DrainHole>& holes, int routines,
-                const std::string& model, const Rules& rules, SimulationCache& cache) {
+                const std::string& model, const Rules& rules, SimulationCache& cache,
+                std::vector<fabvdb::powder::SandpileResult>* turns = nullptr) {
     const std::string key = SimulationCache::key(model, routines, holes) + rules.key();
     double cached = 0.0;
-    if (cache.find(key, cached)) return cached;
+    if (!turns && cache.find(key, cached)) return cached;
     double sum = 0.0;
-    for (int seed = 1; seed <= routines; ++seed)
-        sum += simulate_routine(shell, holes, simulation_routine(seed), rules);
+    for (int seed = 1; seed <= routines; ++seed) {
+        const fabvdb::powder::SandpileResult result = simulate_turns(shell, holes, simulation_routine(seed), rules);
+        sum += result.residual_fraction();
+        if (turns) turns->push_back(result);
+    }
     cache.add(key, sum / routines);
     return sum / routines;
 }
@@ -164,7 +165,7 @@ double simulate(const openvdb::FloatGrid& shell, const std::vector<fabvdb::powde
         }
     double cached = 0.0;
     if (cache.find(key, cached)) return cached;
-    const double residual = simulate_routine(shell, holes, routine, rules);
+    const double residual = simulate_turns(shell, holes, routine, rules).residual_fraction();
     cache.add(key, residual);
     return residual;
 }
@@ -306,14 +307,14 @@ int main(int argc, char** argv) {
             const auto through_same = [&](const std::vector<fabvdb::powder::DrainHole>& holes) {
                 return model.evaluate(model.drain(holes), same).residual_fraction();
             };
-            paired_optimized = through_same(plan.holes);
+            const fabvdb::powder::HoleSetDrain optimized = model.drain(plan.holes);
+            paired_optimized = model.evaluate(optimized, same).residual_fraction();
             if (trace) {
-                const fabvdb::powder::HoleSetDrain drained = model.drain(plan.holes);
                 for (const fabvdb::powder::Routine& routine : same) {
                     model_turns.emplace_back();
                     for (size_t t = 0; t <= routine.size(); ++t) {
                         const fabvdb::powder::Routine prefix(routine.begin(), routine.begin() + long(t));
-                        model_turns.back().push_back(model.evaluate(drained, {prefix}).residual_fraction());
+                        model_turns.back().push_back(model.evaluate(optimized, {prefix}).residual_fraction());
                     }
                 }
             }
@@ -360,11 +361,12 @@ int main(int argc, char** argv) {
             rows.push_back(row);
             continue;
         }
-        row.simulated = simulate(*result.shell, plan.holes, routines, label, rules, cache);
+        std::vector<fabvdb::powder::SandpileResult> simulated_turns;
+        row.simulated =
+            simulate(*result.shell, plan.holes, routines, label, rules, cache, trace ? &simulated_turns : nullptr);
         row.simulated_baseline = simulate(*result.shell, plan.baseline, routines, label, rules, cache);
-        for (size_t r = 0; r < model_turns.size(); ++r) {
-            const fabvdb::powder::SandpileResult turns =
-                simulate_turns(*result.shell, plan.holes, simulation_routine(int(r) + 1), rules);
+        for (size_t r = 0; r < model_turns.size() && r < simulated_turns.size(); ++r) {
+            const fabvdb::powder::SandpileResult& turns = simulated_turns[r];
             std::printf("  routine %zu, residual %% after each turn, model / simulated:", r + 1);
             for (size_t t = 0; t < model_turns[r].size() && t < turns.residual_after_turn.size(); ++t)
                 std::printf(" %.2f/%.2f", 100 * model_turns[r][t],
