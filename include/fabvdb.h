@@ -287,7 +287,13 @@ FABVDB_API fabvdb_status fabvdb_volume_to_mesh(fabvdb_ctx* ctx, const fabvdb_vol
  * voxel of a clean part of the input moved onto it, never flipping or crossing a triangle. out: the repaired mesh,
  * owned by the caller; shells that fail alone go volumetric and are united. report: NULL, or receives (owned by
  * the caller) path (input/mesh/mixed/volumetric), mesh_level, input (fabvdb_mesh_inspect of it), output_triangles,
- * volume, shells_kept/dropped, timings; fixes, shell_paths at mesh level; else fabvdb_volume_from_mesh's keys. */
+ * volume, shells_kept/dropped, fidelity, timings; fixes, shell_paths at mesh level; else fabvdb_volume_from_mesh's
+ * keys, and mesh_level_rejected with a warning when the mesh level's result was not the input's model.
+ * The fidelity gate (docs/reports.md#fidelity): the result must still be the input's model — its surface near
+ * the input's (a near-zero tolerance at mesh level, two voxels through the level set) and the same enclosed
+ * volume. A mesh-level result that fails is replaced by the volumetric repair; a volumetric one that fails
+ * (unless min_shell_volume dropped shells on purpose) returns FABVDB_ERR_INTERNAL, the message naming the mesh
+ * and the figures, and no mesh. */
 FABVDB_API fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
                                             const fabvdb_volume_options* options, fabvdb_mesh** out,
                                             fabvdb_report** report);
@@ -351,7 +357,8 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  *   "repaired"),
  *   volume_solid, volume_shell, material_saved_fraction, cavity_count,
  *   cavities [{volume}], filled_cavities [{volume}], min_wall_at_vertices,
- *   output_vertices, output_triangles, timings {stage: seconds, total}, warnings.
+ *   output_vertices, output_triangles, fidelity (the outer surface against
+ *   the input: docs/reports.md#fidelity), timings {stage: seconds, total}, warnings.
  *   With infill: infill {pattern, cell, strut}; the cavity vertices are then
  *   at least (not exactly) the wall from the outer surface.
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle, wall <= 0,
@@ -360,7 +367,10 @@ FABVDB_API void fabvdb_hollow_options_init(fabvdb_hollow_options* options);
  * infill_cell < 0, an infill strut <= 0 or over infill_cell / 4);
  * FABVDB_ERR_BAD_INPUT (a mesh that encloses no volume); FABVDB_ERR_OUT_OF_BUDGET
  * (the voxel size needs more memory than the context's budget; the message
- * names a voxel size that fits); FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY.
+ * names a voxel size that fits); FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY;
+ * FABVDB_ERR_INTERNAL (the outer surface is not the input's model: the
+ * fidelity gate; a union of crossing shells that fails it is replaced by the
+ * repaired surface first).
  * Out-parameters are untouched on failure. Reports progress. A context is
  * used by one thread at a time. (since 0.1) */
 FABVDB_API fabvdb_status fabvdb_mesh_hollow(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
@@ -434,7 +444,10 @@ FABVDB_API void fabvdb_drain_options_init(fabvdb_drain_options* options);
  * baseline_routine_residual_fraction under its own routine); heatmap (with a
  * heat-map path: the files, their ranges and the share that drains averaged
  * by powder); cavity_volume, residual_volume_per_cavity, cavities (=
- * cavity_count), patches, candidates, input_was_hollow, voxel_size,
+ * cavity_count), patches, candidates, input_was_hollow, voxel_size, fidelity
+ * (the drilled part against the input, what the drills took and the
+ * cavities filled left out; filled_cavities [{center, radius}] lists those:
+ * docs/reports.md#fidelity; a part that fails is FABVDB_ERR_INTERNAL),
  * repose_degrees, effort, orientations, timings (seconds per stage, and
  * total) and warnings (docs/drain.md). No cavity: no holes, solid out.
  * mesh: borrowed. options: borrowed; NULL means the defaults.
@@ -556,14 +569,17 @@ FABVDB_API void fabvdb_decompose_options_init(fabvdb_decompose_options* options)
  *   parts_touched}, edits [{type, parts_touched, parts_after, timings {total},
  *   total_moldability_energy, warning}], part_count, parts [{id, parting_direction,
  *   moldability_energy, area}], total_moldability_energy, under_gamma,
- *   warnings [text], timings {stage: seconds, precompute_per_direction,
- *   total} (docs/decompose.md).
+ *   warnings [text], fidelity (S_low against the input: far is twice its mean
+ *   edge; docs/reports.md#fidelity), timings {stage: seconds,
+ *   precompute_per_direction, total} (docs/decompose.md).
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL handle or out_dir, an
  * option out of range, struct_size not set or from a newer header); FABVDB_ERR_BAD_INPUT (a mesh
  * that encloses no volume, a malformed edits file or an edit that does not
  * apply, e.g. a merge of two points on the same part); FABVDB_ERR_IO (the
  * edits file or out_dir's parent cannot be read or written);
- * FABVDB_ERR_OUT_OF_BUDGET; FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY.
+ * FABVDB_ERR_OUT_OF_BUDGET; FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY;
+ * FABVDB_ERR_INTERNAL (S_low is not the input's model: the fidelity gate,
+ * also applied by fabvdb_decomposition_new).
  * The report is untouched on failure. Reports progress. A context is used by
  * one thread at a time. (since 0.1) */
 FABVDB_API fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
@@ -837,15 +853,17 @@ FABVDB_API void fabvdb_mold_options_init(fabvdb_mold_options* options);
  *   every voxel inside larger triangles, to the nearest part surface over the
  *   bounding-box diagonal; the mean weighted by area; input surface that
  *   the input's own solid encloses, such as the inner faces of overlapping
- *   shells, left out), timings {stage:
- *   seconds, total}, and decomposition (the decomposition's report, when it
+ *   shells, left out), fidelity (the assembled parts against the input: far
+ *   is 1% of the diagonal, at most 5% of the surface; docs/reports.md#fidelity),
+ *   timings {stage: seconds, total}, and decomposition (the decomposition's report, when it
  *   ran) or decomposition_file.
  * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL mesh or out_dir, an
  * option out of range, struct_size not set or from a newer header); FABVDB_ERR_BAD_INPUT (a
  * decomposition file that is malformed, misses parts or belongs to another
  * model or scale: the message names the file and the defect; a part that
  * cannot be molded); FABVDB_ERR_IO; FABVDB_ERR_OUT_OF_BUDGET;
- * FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY. The report is untouched on
+ * FABVDB_ERR_CANCELLED; FABVDB_ERR_OUT_OF_MEMORY; FABVDB_ERR_INTERNAL (the
+ * parts are not the input's model: the fidelity gate). The report is untouched on
  * failure. Reports progress. A context is used by one thread at a time.
  * (since 0.1) */
 FABVDB_API fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const char* decomposition_path,

@@ -64,6 +64,7 @@ static int run_repair(cli_run* run) {
         const int wanted = cli_get(run, "--report")->set || !run->quiet;
         status = fabvdb_mesh_repair(run->ctx, mesh, &options, &repaired, wanted ? &report : NULL);
         if (status == FABVDB_OK) status = fabvdb_mesh_write(run->ctx, repaired, output);
+        if (status == FABVDB_OK && report) cli_print_warnings(run, report);
         fabvdb_mesh_free(repaired);
     }
     fabvdb_mesh_free(mesh);

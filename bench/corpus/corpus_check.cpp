@@ -28,6 +28,12 @@
 //       all_surface; max_part: the part nearest to the farthest point, and
 //       max_side: "buried" when that point lies inside the parts (a cast
 //       part holds more than the input there), else "uncovered".
+//       --exempt X,Y,Z,R (repeatable): input samples in these balls are left
+//       out (a drilled hole's mouth, a cavity filled); --far D (mm):
+//       far_fraction, the share of the area samples left in that lie
+//       farther than D.
+//   corpus_check flip IN OUT.obj
+//       writes the input turned inside out (every triangle reversed) as OBJ.
 //   corpus_check decomposition D.json
 //       tests/support's decomposition checks (ownership, pieces, energies).
 //
@@ -603,17 +609,27 @@ json check_input(int argc, char** argv) {
 
 json check_cover(int argc, char** argv) {
     const Mesh input = read_input(argv[2], std::stod(option(argc, argv, "--fit", "0")));
+    std::vector<std::array<double, 4>> exempt;  // balls: x, y, z, radius
+    const double far = std::stod(option(argc, argv, "--far", "0"));
     std::vector<Triangle3> parts;
     std::vector<Mesh> part_meshes;
     for (int i = 3; i < argc; ++i) {
-        if (std::string(argv[i]) == "--fit") {
+        const std::string arg = argv[i];
+        if (arg == "--fit" || arg == "--exempt" || arg == "--far") {
+            if (arg == "--exempt" && i + 1 < argc) {
+                std::array<double, 4> ball;
+                if (std::sscanf(argv[i + 1], "%lf,%lf,%lf,%lf", &ball[0], &ball[1], &ball[2], &ball[3]) != 4)
+                    throw Failure("bad --exempt (X,Y,Z,R)");
+                exempt.push_back(ball);
+            }
             ++i;
             continue;
         }
-        part_meshes.push_back(read_stl_as_stored(argv[i]));
+        part_meshes.push_back(read_stl_as_stored(arg));
         const auto t = triangles_of(part_meshes.back(), all_triangles(part_meshes.back()));
         parts.insert(parts.end(), t.begin(), t.end());
     }
+    if (parts.empty()) throw Failure("no part surface to measure against");
     const size_t count = part_meshes.size();
     const double diagonal = box_of(input).diagonal();
     // Area samples for the mean (vertices would weight dense regions), all for the max.
@@ -638,16 +654,25 @@ json check_cover(int argc, char** argv) {
     const double floor = 5e-4 * diagonal, step = 1e-4 * diagonal, gap = 0.3;
     const std::vector<Triangle3> input_triangles = triangles_of(input, all_triangles(input));
     const Tree input_tree(input_triangles.begin(), input_triangles.end());
-    const std::vector<char> area_in =
-        enclosed(input, input_tree, area, area_source, area_distance, floor, step, gap);
-    const std::vector<char> vertex_in =
+    std::vector<char> area_in = enclosed(input, input_tree, area, area_source, area_distance, floor, step, gap);
+    std::vector<char> vertex_in =
         enclosed(input, input_tree, with_vertices, vertex_source, vertex_distance, floor, step, gap);
+    // Samples in an exempt ball (a drilled hole's mouth) are left out too.
+    const auto in_ball = [&](const Vec3& p) {
+        for (const auto& b : exempt)
+            if (std::hypot(p[0] - b[0], p[1] - b[1], p[2] - b[2]) <= b[3]) return true;
+        return false;
+    };
+    for (size_t i = 0; i < area.size(); ++i) area_in[i] = area_in[i] || in_ball(area[i]);
+    for (size_t i = 0; i < with_vertices.size(); ++i) vertex_in[i] = vertex_in[i] || in_ball(with_vertices[i]);
     double sum = 0, top = 0;
     size_t kept = 0, left_out = 0;
     Vec3 top_at = with_vertices.empty() ? Vec3{0, 0, 0} : with_vertices[0];
+    size_t beyond = 0;
     for (size_t i = 0; i < area.size(); ++i) {
         if (area_in[i]) continue;
         sum += area_distance[i];
+        beyond += far > 0 && area_distance[i] > far;
         ++kept;
     }
     for (size_t i = 0; i < with_vertices.size(); ++i) {
@@ -664,6 +689,7 @@ json check_cover(int argc, char** argv) {
     out["mean"] = mean_kept;
     out["max_ratio"] = top / diagonal;
     out["mean_ratio"] = mean_kept / diagonal;
+    if (far > 0) out["far_fraction"] = kept ? double(beyond) / double(kept) : 0.0;
     double winding = 0, nearest = std::numeric_limits<double>::infinity();
     size_t nearest_part = 0;
     for (size_t k = 0; k < count; ++k) {
@@ -674,6 +700,21 @@ json check_cover(int argc, char** argv) {
     out["max_part"] = nearest_part;
     out["max_side"] = winding >= 0.5 ? "buried" : "uncovered";
     return out;
+}
+
+//! The input turned inside out, as an OBJ file: every vertex as read (so
+//! `--fit` scales it alike) in full precision, every triangle reversed.
+json flip_input(int argc, char** argv) {
+    if (argc < 4) throw Failure("usage: corpus_check flip IN OUT.obj");
+    const Mesh mesh = read_input(argv[2], 0);
+    std::ofstream out(argv[3]);
+    if (!out) throw Failure(std::string("cannot write ") + argv[3]);
+    out.precision(17);
+    for (const Vec3& p : mesh.vertices) out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for (const auto& t : mesh.triangles) out << "f " << t[0] + 1 << ' ' << t[2] + 1 << ' ' << t[1] + 1 << '\n';
+    out.close();
+    if (!out) throw Failure(std::string("cannot write ") + argv[3]);
+    return {{"file", argv[3]}, {"triangles", mesh.triangles.size()}, {"vertices", mesh.vertices.size()}};
 }
 
 json check_decomposition_file(const std::string& path) {
@@ -708,7 +749,7 @@ json check_decomposition_file(const std::string& path) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::cerr << "usage: corpus_check solid|input|cover|decomposition FILE [options] (see the top of "
+        std::cerr << "usage: corpus_check solid|input|cover|flip|decomposition FILE [options] (see the top of "
                      "bench/corpus/corpus_check.cpp)\n";
         return 1;
     }
@@ -718,6 +759,7 @@ int main(int argc, char** argv) {
         if (mode == "solid") out = check_solid(argc, argv);
         else if (mode == "input") out = check_input(argc, argv);
         else if (mode == "cover") out = check_cover(argc, argv);
+        else if (mode == "flip") out = flip_input(argc, argv);
         else if (mode == "decomposition") {
             int none = 1;
             testing::InitGoogleTest(&none, argv);

@@ -30,6 +30,11 @@ WALL_TOLERANCE = 0.9          # measured wall >= 90% of --wall
 MOLD_MAX_RATIO = 0.01         # input within 1% of the diagonal of the cast parts (max)
 MOLD_MEAN_RATIO = 0.001       # and 0.1% (area-weighted mean)
 KEPT_TOLERANCE = 1e-5         # x diagonal: a clean input "kept" by repair (float rounding only)
+FIDELITY_FAR_RATIO = 0.01     # every solid written: input surface farther than 1% of the diagonal
+FIDELITY_FAR_VOXELS = 3.0      # (or 3 of the command's voxels, if more) is far; at most
+FIDELITY_FAR_SHARE = 0.02      # 2% of it may be, and the area-weighted mean at most
+FIDELITY_MEAN_RATIO = 0.001    # 0.1% of the diagonal (or 0.5 voxel, if more: drain's wall / 4
+FIDELITY_MEAN_VOXELS = 0.5     # is 0.5 mm, 0.6% of a 60 mm cube's diagonal)
 
 
 def read_manifest(corpus):
@@ -181,16 +186,45 @@ def fmt(x, digits=3):
     return "%.*g" % (digits, x)
 
 
+def fidelity(runner, src, diagonal, outputs, voxel, extra=()):
+    """The input's distance to what a command wrote (corpus_check cover), as
+    a figure and a problem (None when it is the input's model). Far is 1% of
+    the diagonal, or 3 of the command's voxels where that is more (the
+    accuracy asked for); an output is far from its input when more than 2% of
+    the input's surface is far from it, or the mean distance is over 0.1% of
+    the diagonal (0.5 voxel where that is more). The largest distance is a
+    figure: a feature thinner than the voxel may vanish."""
+    far = max(FIDELITY_FAR_RATIO * diagonal, FIDELITY_FAR_VOXELS * (voxel or 0))
+    mean = max(FIDELITY_MEAN_RATIO * diagonal, FIDELITY_MEAN_VOXELS * (voxel or 0))
+    cover = runner.check(["cover", src, "--fit", str(FIT_MM), "--far", repr(far)] + list(extra) + list(outputs))
+    if "error" in cover:
+        return cover, "fidelity not measured: " + cover["error"], "fidelity not measured"
+    fig = "input to output: %s%% farther than %s mm, max %s%% / mean %s%% of the diagonal" % (
+        fmt(100 * cover["far_fraction"]), fmt(far), fmt(100 * cover["max_ratio"]), fmt(100 * cover["mean_ratio"]))
+    if cover["far_fraction"] > FIDELITY_FAR_SHARE or cover["mean"] > mean:
+        return cover, "far from the input (%s, %s)" % (fig, cover["max_side"]), fig
+    return cover, None, fig
+
+
 def process_model(row, args, runner, with_mold):
     name = row["file"]
-    src = os.path.join(args.corpus, name)
+    original = os.path.join(args.corpus, name)
+    src = original
     work = os.path.join(args.out, "runs", name)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
+    if args.inside_out:
+        # The same model stored inside out: every triangle reversed, as OBJ
+        # (every vertex as read, full precision), named after the original.
+        src = os.path.join(work, os.path.splitext(name)[0] + ".inside-out.obj")
+        flipped = runner.check(["flip", original, src])
+        if "error" in flipped:
+            raise RuntimeError("%s: could not turn it inside out: %s" % (name, flipped["error"]))
+    wanted = set(args.commands)
     fabvdb = os.path.abspath(args.fabvdb)
     fit = ["--fit", "%gmm" % FIT_MM]
     record = {"model": name, "category": row["category"], "triangles": row["triangles"],
-              "closed": row["closed"], "runs": {}}
+              "closed": row["closed"], "inside_out": args.inside_out, "runs": {}}
     facts = runner.check(["input", src, "--fit", str(FIT_MM)])
     record["input_check"] = facts
     closed_input = row["closed"] == "yes"
@@ -207,12 +241,14 @@ def process_model(row, args, runner, with_mold):
         return c
 
     # info: on the file as it is (no --fit), so unit warnings can show.
-    r = runner.run([fabvdb, "info", src, "--report", "info.json"], work, "info")
-    if r["exit"] == 0:
+    r = runner.run([fabvdb, "info", src, "--report", "info.json"], work, "info") if "info" in wanted else None
+    if r is None:
+        pass
+    elif r["exit"] == 0:
         try:
             rep = json.load(open(os.path.join(work, "info.json")))
             warn = [l for l in r["stderr"].splitlines() if "warn" in l.lower()]
-            dropped = threemf_repeated_corner_triangles(src) if src.lower().endswith(".3mf") else 0
+            dropped = threemf_repeated_corner_triangles(original) if original.lower().endswith(".3mf") else 0
             if rep.get("triangles") != row["triangles"] - dropped:
                 cell("info", "FAIL", "%s triangles, manifest %d" % (rep.get("triangles"), row["triangles"]), r)
             else:
@@ -227,8 +263,11 @@ def process_model(row, args, runner, with_mold):
 
     # repair
     out = os.path.join(work, "repaired.stl")
-    r = runner.run([fabvdb, "repair", src] + fit + ["-o", out, "--report", "repair.json"], work, "repair")
-    if r["exit"] == 0:
+    r = runner.run([fabvdb, "repair", src] + fit + ["-o", out, "--report", "repair.json"], work, "repair") \
+        if "repair" in wanted else None
+    if r is None:
+        pass
+    elif r["exit"] == 0:
         chk = runner.check(["solid", out, "--reference", src, "--fit", str(FIT_MM)])
         bad = solid_verdict(chk, "output")
         if bad:
@@ -239,24 +278,32 @@ def process_model(row, args, runner, with_mold):
             h = max(chk["input_to_output"]["max"], chk["output_to_input"]["max"])
             hv = h / voxel if voxel else float("nan")
             fig = "Hausdorff %s voxel (%s mm), %d tri" % (fmt(hv), fmt(h), chk["triangles"])
-            if facts.get("valid"):
+            cover, far, ffig = fidelity(runner, src, chk["input_diagonal"], [out], voxel)
+            fig += ", " + ffig
+            if far:
+                cell("repair", "FAIL", far, r, check=chk, fidelity=cover, hausdorff_voxels=hv)
+            elif facts.get("valid"):
                 kept = h <= KEPT_TOLERANCE * chk["diagonal"] and chk["triangles"] == facts["triangles"]
                 if not kept:
                     cell("repair", "FAIL", "clean solid not kept as it is (%s; input %d tri)" %
-                         (fig, facts["triangles"]), r, check=chk, hausdorff_voxels=hv)
+                         (fig, facts["triangles"]), r, check=chk, fidelity=cover, hausdorff_voxels=hv)
                 else:
-                    cell("repair", "ok", "kept, " + fig, r, check=chk, hausdorff_voxels=hv)
+                    cell("repair", "ok", "kept, " + fig, r, check=chk, fidelity=cover, hausdorff_voxels=hv)
             else:
-                cell("repair", "ok", fig, r, check=chk, hausdorff_voxels=hv)
+                cell("repair", "ok", fig, r, check=chk, fidelity=cover, hausdorff_voxels=hv)
     else:
         v, why = judge_failure(r, src, out, facts, closed_input)
         cell("repair", v, why, r)
+    if "hollow" not in wanted and "drain" not in wanted and "decompose" not in wanted:
+        return record
 
     # hollow
     out = os.path.join(work, "hollow.stl")
     r = runner.run([fabvdb, "hollow", src] + fit + ["--wall", "%gmm" % WALL_MM, "-o", out, "--report",
-                                                    "hollow.json"], work, "hollow")
-    if r["exit"] == 0:
+                                                    "hollow.json"], work, "hollow") if "hollow" in wanted else None
+    if r is None:
+        pass
+    elif r["exit"] == 0:
         chk = runner.check(["solid", out, "--reference", src, "--fit", str(FIT_MM), "--cavity-wall"])
         bad = solid_verdict(chk, "output")
         if bad:
@@ -281,7 +328,11 @@ def process_model(row, args, runner, with_mold):
             fig += ", input to outer surface %s voxel" % fmt(outer / voxel if voxel else float("nan"))
             if facts.get("valid") and voxel and outer > voxel:
                 verdict, why = "FAIL", "clean input's surface moved %s voxel" % fmt(outer / voxel)
-            cell("hollow", verdict, why + " (" + fig + ")" if why else fig, r, check=chk)
+            cover, far, ffig = fidelity(runner, src, chk["input_diagonal"], [out], voxel)
+            fig += ", outer surface: " + ffig
+            if far:
+                verdict, why = "FAIL", far
+            cell("hollow", verdict, why + " (" + fig + ")" if why else fig, r, check=chk, fidelity=cover)
     else:
         v, why = judge_failure(r, src, out, facts, closed_input)
         cell("hollow", v, why, r)
@@ -289,9 +340,11 @@ def process_model(row, args, runner, with_mold):
     # drain, then powder-sim on what it wrote
     out = os.path.join(work, "drained.stl")
     r = runner.run([fabvdb, "drain", src] + fit + ["--wall", "%gmm" % WALL_MM, "--holes", "auto", "-o", out,
-                                                   "--report", "drain.json"], work, "drain")
+                                                   "--report", "drain.json"], work, "drain") if "drain" in wanted else None
     drained = False
-    if r["exit"] == 0:
+    if r is None:
+        pass
+    elif r["exit"] == 0:
         chk = runner.check(["solid", out])
         bad = solid_verdict(chk, "output")
         rep = json.load(open(os.path.join(work, "drain.json")))
@@ -303,15 +356,29 @@ def process_model(row, args, runner, with_mold):
             fig = "%d holes" % holes
             if predicted is not None:
                 fig += ", predicted residual %s%%" % fmt(100 * predicted)
-            cell("drain", "ok", fig, r, check=chk)
-            drained = holes > 0
+            # Each hole's drilled segment and mouth, and each cavity drain
+            # filled, are left out of the fidelity.
+            mouths = []
+            for c in rep.get("filled_cavities", []):
+                mouths += ["--exempt", "%.17g,%.17g,%.17g,%.17g" % (c["center"][0], c["center"][1], c["center"][2],
+                                                                     c["radius"])]
+            for h in rep.get("holes", []):
+                c, a, depth = h["center"], h["axis"], h["depth"]
+                mouths += ["--exempt", "%.17g,%.17g,%.17g,%.17g" % (
+                    c[0] + 0.5 * depth * a[0], c[1] + 0.5 * depth * a[1], c[2] + 0.5 * depth * a[2],
+                    0.5 * depth + h["diameter"])]
+            cover, far, ffig = fidelity(runner, src, facts.get("diagonal") or 0, [out], rep.get("voxel_size"), mouths)
+            fig += ", " + ffig
+            cell("drain", "FAIL" if far else "ok", far + " (" + fig + ")" if far else fig, r, check=chk,
+                 fidelity=cover)
+            drained = holes > 0 and not far
         if not bad and not drained:
-            cell("powder-sim", "n/a", "no holes (no cavity)", None)
+            cell("powder-sim", "n/a", "drained part far from the input" if holes else "no holes (no cavity)", None)
     else:
         v, why = judge_failure(r, src, out, facts, closed_input)
         cell("drain", v, why, r)
         cell("powder-sim", "n/a", "no drained part", None)
-    if drained:
+    if drained and "powder-sim" in wanted:
         r = runner.run([fabvdb, "powder-sim", out, "--holes", "drain.json", "--report", "sim.json"], work,
                        "powder-sim")
         if r["exit"] == 0:
@@ -326,7 +393,7 @@ def process_model(row, args, runner, with_mold):
             v, why = judge_failure(r, out, None, {}, False)
             cell("powder-sim", v, why, r)
 
-    if not with_mold:
+    if not with_mold or "decompose" not in wanted:
         return record
 
     # decompose, then mold from that decomposition
@@ -352,6 +419,8 @@ def process_model(row, args, runner, with_mold):
     else:
         v, why = judge_failure(r, src, dec, facts, closed_input)
         cell("decompose", v, why, r)
+    if "mold" not in wanted:
+        return record
     if not decomposed:
         cell("mold", "n/a", "no decomposition", None)
         return record
@@ -424,7 +493,11 @@ def write_tables(args, rows, selected):
                 failures.append((rec["model"], c, cellv))
     doc = {"generated": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
            "recipe": {"fit_mm": FIT_MM, "wall_mm": WALL_MM, "holes": "auto", "time_cap_s": args.time_cap,
-                      "mem_cap": args.mem_cap, "subset": args.subset, "molds": not args.no_molds},
+                      "mem_cap": args.mem_cap, "subset": args.subset, "molds": not args.no_molds,
+                      "inside_out": args.inside_out, "commands": args.commands,
+                      "fidelity": {"far_ratio": FIDELITY_FAR_RATIO, "mean_ratio": FIDELITY_MEAN_RATIO,
+                                   "far_voxels": FIDELITY_FAR_VOXELS, "far_share": FIDELITY_FAR_SHARE,
+                                   "mean_voxels": FIDELITY_MEAN_VOXELS}},
            "summary": summary, "models": records}
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump(doc, f, indent=1)
@@ -482,6 +555,13 @@ def main():
                    help="run neither decompose nor mold (the ctest of the fast subset: info, repair, hollow, "
                    "drain and powder-sim)")
     p.add_argument("--only", nargs="*", help="rerun just these models (their rows are refreshed)")
+    p.add_argument("--category", nargs="*", choices=sorted(MOLD_SHARE),
+                   help="run just the models of these categories (their rows are refreshed)")
+    p.add_argument("--commands", default=",".join(COMMANDS),
+                   help="comma-separated commands to run (default all; powder-sim needs drain, mold decompose)")
+    p.add_argument("--inside-out", action="store_true",
+                   help="run every command on each model turned inside out (every triangle reversed, written "
+                   "as OBJ by corpus_check flip); use its own --out")
     p.add_argument("--jobs", type=int, default=2, help="models run at once")
     p.add_argument("--time-cap", type=int, default=120, help="seconds per command run")
     p.add_argument("--mem-cap", default="8G", help="address-space cap per command run")
@@ -490,6 +570,10 @@ def main():
                    help="run nothing: write the tables from the records already in OUT/runs")
     args = p.parse_args()
     args.mem_cap_bytes = parse_size(args.mem_cap)
+    args.commands = [c for c in args.commands.split(",") if c]
+    unknown = [c for c in args.commands if c not in COMMANDS]
+    if unknown:
+        p.error("unknown command(s) in --commands: " + ", ".join(unknown))
     args.argv_text = " ".join(sys.argv[1:])
     args.checker = os.path.abspath(args.checker)
     args.corpus = os.path.abspath(args.corpus)
@@ -505,7 +589,8 @@ def main():
         mold_set = set()
     selected = {r["file"] for r in selected_rows}
     # Smallest first, so an interrupted run has covered the most models.
-    todo = sorted((r for r in selected_rows if not args.only or r["file"] in args.only),
+    todo = sorted((r for r in selected_rows if (not args.only or r["file"] in args.only) and
+                   (not args.category or r["category"] in args.category)),
                   key=lambda r: (r["triangles"], r["file"]))
     runner = Runner(args)
 

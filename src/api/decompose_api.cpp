@@ -4,10 +4,12 @@
 #include <cmath>
 
 #include "api/decompose_settings.h"
+#include "api/fidelity_report.h"
 #include "api/guard.h"
 #include "api/options.h"
 #include "surface/decompose.h"
 #include "surface/decomposition_io.h"
+#include "volume/input_fidelity.h"
 
 namespace fabvdb::api {
 
@@ -18,6 +20,20 @@ void require_range(bool ok, const char* message) {
 }
 
 }  // namespace
+
+nlohmann::json require_faithful_low_res(const Mesh& input, const Mesh& low_res, const std::string& name,
+                                        Progress& progress) {
+    double length = 0.0;
+    for (const Triangle& t : low_res.triangles)
+        for (int k = 0; k < 3; ++k)
+            length += std::sqrt(squared_distance(low_res.vertices[t[k]], low_res.vertices[t[(k + 1) % 3]]));
+    volume::FidelityLimits limits;
+    limits.distance = low_res.triangles.empty() ? 0.0 : 2.0 * length / double(3 * low_res.triangles.size());
+    limits.far_share = 0.05;
+    const volume::Fidelity fidelity = volume::measure_fidelity(input, low_res, limits, progress);
+    volume::require_faithful(fidelity, name, "low-resolution surface the parts are cut from");
+    return fidelity_report(fidelity, limits);
+}
 
 fabvdb::surface::DecomposeSettings decompose_settings(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
                                                       const fabvdb_decompose_options& o) {
@@ -84,6 +100,8 @@ fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, co
             edits_path ? fabvdb::surface::read_edits(edits_path) : std::vector<fabvdb::surface::Edit>{};
         fabvdb::Progress progress = ctx->make_progress();
         fabvdb::surface::DecomposeResult result = fabvdb::surface::decompose_mesh(mesh->mesh, settings, edits, progress);
+        result.report["fidelity"] =
+            fabvdb::api::require_faithful_low_res(mesh->mesh, result.shell.outer, mesh->name, progress);
         progress.stage("write decomposition");
         fabvdb::surface::write_decomposition(out_dir, mesh->mesh, result.shell, result.terms, result.decomposition,
                                              settings.decomposition);

@@ -134,6 +134,7 @@ fabvdb_status fabvdb_decomposition_new(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
         const auto start = std::chrono::steady_clock::now();
         auto handle = std::make_unique<fabvdb_decomposition>();
         handle->session.emplace(mesh->mesh, settings, progress);
+        fabvdb::api::require_faithful_low_res(mesh->mesh, handle->session->shell().outer, mesh->name, progress);
         handle->made_with = options;
         handle->made_with.shell_thickness = handle->session->shell().thickness;
         handle->last_seconds = fabvdb::seconds_since(start);

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "api/fidelity_report.h"
 #include "api/guard.h"
 #include "api/options.h"
 #include "core/colour_bar.h"
@@ -269,6 +270,7 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
                                      {"cavities", 0},
                                      {"cavity_count", 0},
                                      {"input_was_hollow", result.input_was_hollow},
+                                     {"fidelity", fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits)},
                                      {"voxel_size", result.voxel_size},
                                      {"timings", timings_with_total()},
                                      {"warnings", result.warnings}};
@@ -304,6 +306,10 @@ fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const 
         report["patches"] = plan.patches.size();
         report["candidates"] = plan.candidate_count;
         report["input_was_hollow"] = result.input_was_hollow;
+        report["filled_cavities"] = nlohmann::json::array();
+        for (const auto& [center, radius] : result.filled_cavities)
+            report["filled_cavities"].push_back({{"center", vec_json(center)}, {"radius", radius}});
+        report["fidelity"] = fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits);
         report["voxel_size"] = result.voxel_size;
         report["repose_degrees"] = o.repose_degrees;
         report["effort"] = o.effort;

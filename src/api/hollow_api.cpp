@@ -3,6 +3,7 @@
 #include <cstring>
 #include <memory>
 
+#include "api/fidelity_report.h"
 #include "api/guard.h"
 #include "api/options.h"
 #include "api/volume_handle.h"
@@ -45,6 +46,9 @@ nlohmann::json report_of(const HollowResult& result, const HollowOptions& option
     report["adaptivity"] = options.adaptivity;
     report["min_cavity_volume"] = options.min_cavity_volume;
     report["outer_surface"] = result.outer_surface;
+    report["fidelity"] = result.outer_surface == "input"
+                             ? fabvdb::api::fidelity_report_kept()
+                             : fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits);
     report["volume_solid"] = result.volume_solid;
     report["volume_shell"] = result.volume_shell;
     report["material_saved_fraction"] =

@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "api/fidelity_report.h"
 #include "api/guard.h"
 #include "api/options.h"
 #include "core/atomic_output.h"
@@ -170,6 +171,7 @@ fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const c
         }
         report["mean_distance_ratio"] = result.mean_distance / result.diagonal;
         report["hausdorff_ratio"] = result.max_distance / result.diagonal;
+        report["fidelity"] = fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits);
         report["lost_triangles"] = result.lost_triangles;
         report["vanished_parts"] = result.vanished_parts;
         report["warnings"] = nlohmann::json::array();

@@ -9,6 +9,7 @@
 
 #include <openvdb/io/File.h>
 
+#include "api/fidelity_report.h"
 #include "api/guard.h"
 #include "api/options.h"
 #include "api/volume_handle.h"
@@ -19,6 +20,7 @@
 #include "surface/inspect.h"
 #include "surface/mesh_repair.h"
 #include "volume/extract_mesh.h"
+#include "volume/input_fidelity.h"
 #include "volume/level_set_volume.h"
 #include "volume/mesh_shells.h"
 #include "volume/repair.h"
@@ -172,6 +174,28 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
             }
         }
         const double mesh_level_seconds = volumetric ? 0.0 : clock.lap("mesh level");
+        // The mesh level's result must still be the input's model (a resolved
+        // union of an inside-out shell can be a sliver of it); else voxels
+        // repair the input afresh.
+        nlohmann::json fidelity, mesh_level_rejected;
+        if (fixed) {
+            if (fixed->path == "input") {
+                fidelity = fabvdb::api::fidelity_report_kept();
+            } else {
+                const fabvdb::volume::FidelityLimits limits =
+                    fixed->path == "mixed" ? fabvdb::volume::voxel_limits(repair.distance.voxel_size)
+                                           : fabvdb::volume::exact_limits(mesh->mesh);
+                const fabvdb::volume::Fidelity measured =
+                    fabvdb::volume::measure_fidelity(mesh->mesh, fixed->mesh, limits, progress);
+                fidelity = fabvdb::api::fidelity_report(measured, limits);
+                if (!measured.passed) {
+                    mesh_level_rejected = {{"path", fixed->path}, {"fixes", fixed->fixes}, {"fidelity", fidelity}};
+                    fixed.reset();
+                    oriented = fabvdb::Mesh{};
+                }
+            }
+            clock.lap("fidelity");
+        }
         if (fixed) {
             nlohmann::json document;
             document["path"] = fixed->path;
@@ -188,6 +212,7 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
             document["input"] = std::move(input);
             document["output_triangles"] = fixed->mesh.triangles.size();
             document["volume"] = signed_volume(fixed->mesh);
+            document["fidelity"] = std::move(fidelity);
             document["timings"] = stages;
             document["timings"]["total"] = clock.total();
             if (report) *report = fabvdb::api::new_report_handle(std::move(document));
@@ -197,7 +222,26 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
         repair.distance.oriented = !oriented.triangles.empty();
         fabvdb::volume::RepairResult result =
             fabvdb::volume::repair(repair.distance.oriented ? oriented : mesh->mesh, repair, progress);
+        clock.lap("volumetric");
+        // What voxels made must still be the input's model: not when shells
+        // were dropped on purpose, nor its volume when sheets were thickened.
+        fabvdb::volume::FidelityLimits limits = fabvdb::volume::voxel_limits(repair.distance.voxel_size);
+        limits.volume = repair.distance.thicken == 0.0;
+        const fabvdb::volume::Fidelity measured =
+            fabvdb::volume::measure_fidelity(mesh->mesh, result.mesh, limits, progress, result.grid.get());
+        if (repair.min_shell_volume == 0.0) fabvdb::volume::require_faithful(measured, mesh->name, "repaired solid");
+        const double fidelity_seconds = clock.lap("fidelity");
         nlohmann::json document = repair_report(result, clock.total());
+        document["fidelity"] = fabvdb::api::fidelity_report(measured, limits);
+        document["timings"]["fidelity"] = fidelity_seconds;
+        if (!mesh_level_rejected.is_null()) {
+            document["warnings"] = {mesh->name + ": the mesh-level repair (" +
+                                    mesh_level_rejected["path"].get<std::string>() +
+                                    ") was not the input's model (" +
+                                    mesh_level_rejected["fidelity"]["defect"].get<std::string>() +
+                                    "), so voxels repaired it"};
+            document["mesh_level_rejected"] = std::move(mesh_level_rejected);
+        }
         if (report) document["timings"]["inspect input"] = inspect_seconds;
         if (!volumetric) document["timings"]["mesh level"] = mesh_level_seconds;
         document["path"] = "volumetric";

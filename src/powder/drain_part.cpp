@@ -12,12 +12,14 @@
 
 #include "core/error.h"
 #include "core/stage_clock.h"
+#include "core/vec3_ops.h"
 #include "surface/mesh_topology.h"
 #include "surface/signed_volume.h"
 #include "volume/clean_solid.h"
 #include "volume/drill_holes.h"
 #include "volume/extract_mesh.h"
 #include "volume/hollow.h"
+#include "volume/input_fidelity.h"
 #include "volume/level_set_volume.h"
 #include "volume/signed_distance.h"
 
@@ -64,8 +66,18 @@ openvdb::FloatGrid::Ptr level_set_of(const Mesh& closed, double voxel) {
 //! The cavities that stay open once the connected voids of `cavity` that
 //! hold one of `points` on their surface are filled: nullptr when none
 //! stays. Adds the filled voids' count and volume (mm³).
+//! A ball holding the active voxels of `grid` (its box's centre and half
+//! diagonal, a voxel more).
+std::pair<Vec3, double> bounding_ball(const openvdb::FloatGrid& grid) {
+    const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
+    const openvdb::Vec3d lo = grid.indexToWorld(box.min()), hi = grid.indexToWorld(box.max());
+    const Vec3 centre{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
+    return {centre, 0.5 * (hi - lo).length() + grid.voxelSize()[0]};
+}
+
 openvdb::FloatGrid::Ptr fill_cavities_at(const openvdb::FloatGrid& cavity, const std::vector<Vec3>& points,
-                                         size_t& filled_count, double& filled_volume) {
+                                         size_t& filled_count, double& filled_volume,
+                                         std::vector<std::pair<Vec3, double>>& filled_balls) {
     std::vector<openvdb::FloatGrid::Ptr> voids;
     openvdb::tools::segmentSDF(cavity, voids);
     std::vector<bool> filled(voids.size(), false);
@@ -85,6 +97,7 @@ openvdb::FloatGrid::Ptr fill_cavities_at(const openvdb::FloatGrid& cavity, const
         if (filled[v]) {
             ++filled_count;
             filled_volume += volume::level_set_volume(*voids[v]);
+            filled_balls.push_back(bounding_ball(*voids[v]));
         } else if (!open) {
             open = voids[v];
         } else {
@@ -107,7 +120,9 @@ bool is_hollow_shell(const Mesh& mesh, Progress& progress) {
     return voids > 1e-6 * outer && voids > 0.0 && volume::check_solid(mesh, progress).clean;
 }
 
-DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, Progress& progress) {
+namespace {
+
+DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions& options, Progress& progress) {
     if (!(options.wall > 0.0) || !std::isfinite(options.wall))
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the wall must be > 0 mm");
     validate_mesh(input, options.input_name);
@@ -168,7 +183,8 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
         result.plan = plan_drain_holes(*part, *cavity, *result.shell, plan_options, progress);
         clock.add_laps(result.plan.timings);
         if (result.plan.cavities_without_site.empty()) break;
-        cavity = fill_cavities_at(*cavity, result.plan.cavities_without_site, filled_count, filled_volume);
+        cavity = fill_cavities_at(*cavity, result.plan.cavities_without_site, filled_count, filled_volume,
+                                  result.filled_cavities);
         if (cavity && !traps_powder(*cavity, progress)) cavity.reset();
         if (!cavity) break;
     }
@@ -204,6 +220,33 @@ DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, P
     clock.lap("drill");
     result.drilled = volume::extract_mesh(*drilled, 0.0, progress);
     clock.lap("extract");
+    return result;
+}
+
+}  // namespace
+
+DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, Progress& progress) {
+    DrainPartResult result = hollow_plan_and_drill(input, options, progress);
+    // The drilled part must still be the input's model, but for what the
+    // drills took and the cavities filled (the input's own voids among
+    // them); its volume is the material's, not the solid's.
+    StageClock clock(result.timings);
+    result.fidelity_limits = volume::voxel_limits(result.voxel_size);
+    result.fidelity_limits.volume = false;
+    result.fidelity_limits.exempt = result.filled_cavities;
+    // Each drilled cylinder (from half a diameter behind the centre to its
+    // depth, as drilled), covered by balls of the hole's diameter every radius.
+    for (const DrainHole& hole : result.plan.holes) {
+        const double radius = 0.5 * hole.diameter, length = radius + hole.depth;
+        const Vec3 start = hole.center - radius * hole.axis;
+        for (double along = 0.0;; along = std::min(along + radius, length)) {
+            result.fidelity_limits.exempt.push_back({start + along * hole.axis, hole.diameter});
+            if (along >= length) break;
+        }
+    }
+    result.fidelity = volume::measure_fidelity(input, result.drilled, result.fidelity_limits, progress);
+    volume::require_faithful(result.fidelity, options.input_name, "drained part");
+    clock.lap("fidelity");
     return result;
 }
 

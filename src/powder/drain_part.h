@@ -3,13 +3,15 @@
 //! shell — it has inward-facing shells that bound a void — is used as is),
 //! the drain-hole plan (powder/drain_plan.h), the holes drilled through the
 //! shell in the level set (volume::drill_holes) and the drilled part
-//! extracted as the output mesh. A part too thin for a cavity needs no holes:
+//! extracted as the output mesh, checked to be the input's model but for
+//! the holes and the cavities filled (volume/input_fidelity.h). A part too thin for a cavity needs no holes:
 //! it comes back solid, with a warning. Reports progress; cancellable; a cancelled
 //! or failed call returns nothing.
 #pragma once
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <openvdb/openvdb.h>
@@ -17,6 +19,7 @@
 #include "core/mesh.h"
 #include "core/progress.h"
 #include "powder/drain_plan.h"
+#include "volume/input_fidelity.h"
 
 namespace fabvdb::powder {
 
@@ -39,6 +42,14 @@ struct DrainPartResult {
     double voxel_size = 0.0;
     openvdb::FloatGrid::Ptr shell;  //!< undrilled, negative in the wall
     DrainPlan plan;
+    //! Balls (centre, radius, mm) holding the cavities left solid, too small
+    //! or thin for a hole (the input's own voids among them).
+    std::vector<std::pair<Vec3, double>> filled_cavities;
+    //! How the drilled part stands to the input (volume/input_fidelity.h),
+    //! what the drills took and the cavities filled left out; a part that is
+    //! not the input's model is an Error(INTERNAL), never a result.
+    volume::Fidelity fidelity;
+    volume::FidelityLimits fidelity_limits;
     std::map<std::string, double> timings;  //!< all stages, seconds
 };
 

@@ -10,10 +10,12 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "surface/surface_distance.h"
+#include "volume/surface_distance.h"
 #include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
+
+using volume::SurfaceDistance;
 
 namespace {
 

@@ -5,10 +5,12 @@
 #include <cmath>
 
 #include "core/vec3_ops.h"
-#include "surface/surface_distance.h"
+#include "volume/surface_distance.h"
 #include "volume/winding_number.h"
 
 namespace fabvdb::surface {
+
+using volume::SurfaceDistance;
 namespace {
 
 //! mm: input surface facing its own solid across a narrower slit has no

@@ -174,6 +174,13 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         result.parts[p].max_distance = fidelity.part_max[p];
         result.parts[p].mean_distance = fidelity.part_mean[p];
     }
+    Mesh assembled;
+    for (const Mesh* part : cast_parts) append(assembled, *part);
+    result.fidelity_limits.distance = 0.01 * result.diagonal;
+    result.fidelity_limits.far_share = 0.05;
+    result.fidelity_limits.volume = false;  // a shell's parts hold its wall, not the solid
+    result.fidelity = volume::measure_fidelity(input, assembled, result.fidelity_limits, progress);
+    volume::require_faithful(result.fidelity, options.input_name, "set of cast parts");
     clock.lap("distance to the input");
     return result;
 }

@@ -19,7 +19,7 @@
 //!     without crossing triangles (float_rounding.h; the mold pieces are too).
 //! Measures what each part added and how closely the parts reproduce the
 //! input (distance from the input surface, sampled every voxel, to the
-//! nearest part surface).
+//! nearest part surface), and stops when they are not the input's model.
 //! Cancellable between and inside stages; a cancelled run returns nothing.
 #pragma once
 
@@ -32,6 +32,7 @@
 #include "core/progress.h"
 #include "surface/decomposition_parts.h"
 #include "surface/mold_assembly.h"
+#include "volume/input_fidelity.h"
 
 namespace fabvdb::surface {
 
@@ -84,6 +85,11 @@ struct MoldGeneration {
     double diagonal = 0;          //!< of the input's bounding box, mm
     double mean_distance = 0;     //!< mm, input vertices to the nearest part surface
     double max_distance = 0;
+    //! The fidelity gate on the assembled parts (volume/input_fidelity.h):
+    //! far is 1% of the diagonal, and at most 5% of the input's surface may
+    //! be; parts that fail are an Error(INTERNAL), never a result.
+    volume::Fidelity fidelity;
+    volume::FidelityLimits fidelity_limits;
     //! Input triangles with surface the input's level set lost (thinner than
     //! a voxel), kept in a tube a voxel thick (volume/keep_lost_surface.h).
     size_t lost_triangles = 0;

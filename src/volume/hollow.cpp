@@ -19,6 +19,7 @@
 #include "volume/cavity_regions.h"
 #include "volume/clean_solid.h"
 #include "volume/extract_mesh.h"
+#include "volume/input_fidelity.h"
 #include "volume/memory_estimate.h"
 #include "volume/mesh_shells.h"
 #include "volume/repair.h"
@@ -145,6 +146,18 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
         if (resolved && !clean_in_floats(*resolved, frame, progress)) resolved.reset();
         clock.lap("resolve crossings");
     }
+    // The union must still be the input's model, as every outer surface
+    // not the input's own (input_fidelity.h); else voxels repair the input.
+    if (resolved) {
+        result.fidelity_limits = exact_limits(input);
+        result.fidelity = measure_fidelity(input, *resolved, result.fidelity_limits, progress);
+        if (!result.fidelity.passed) {
+            result.warnings.push_back(options.input_name + ": the union of its crossing shells was not the input's model (" +
+                                      result.fidelity.defect + "), so voxels repaired it");
+            resolved.reset();
+        }
+        clock.lap("fidelity");
+    }
     if (check.clean) {
         outer = input;
         result.outer_surface = "input";
@@ -156,9 +169,14 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
         repair_options.distance.voxel_size = voxel;
         repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
         repair_options.distance.input_name = options.input_name;
-        outer = repair_in_frame(input, repair_options, frame, progress).mesh;
+        RepairResult repaired = repair_in_frame(input, repair_options, frame, progress);
+        outer = std::move(repaired.mesh);
         result.outer_surface = "repaired";
         clock.lap("repair");
+        result.fidelity_limits = voxel_limits(voxel);
+        result.fidelity = measure_fidelity(input, outer, result.fidelity_limits, progress, repaired.grid.get());
+        require_faithful(result.fidelity, options.input_name, "hollowed part's outer surface");
+        clock.lap("fidelity");
     }
     result.volume_solid = signed_volume(outer);
 

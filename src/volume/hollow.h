@@ -14,6 +14,9 @@
 //! triangles.
 //! Guarantees: outer shells face out, cavity shells face in, every shell is
 //! closed and no cavity triangle touches the outer surface (checked exactly);
+//! the outer surface is the input's model (input_fidelity.h: a union of
+//! crossing shells that is not is replaced by the repaired surface, and a
+//! repaired surface that is not stops the hollowing with Error(INTERNAL));
 //! regions thinner than 2·(wall + opening) stay solid (a part thinner than
 //! that everywhere comes back solid, with a warning); voids under
 //! `min_cavity_volume` are filled. An optional gyroid strut infill is carved out of the cavity
@@ -32,6 +35,7 @@
 #include "core/mesh.h"
 #include "core/progress.h"
 #include "volume/gyroid_infill.h"
+#include "volume/input_fidelity.h"
 
 namespace fabvdb::volume {
 
@@ -52,6 +56,12 @@ struct HollowResult {
     //! "resolved" (the input's triangles with their crossings cut out) or
     //! "repaired" (the repair pipeline's surface).
     std::string outer_surface;
+    //! How the outer surface stands to the input (input_fidelity.h): held to
+    //! exact_limits when resolved, voxel_limits when repaired (a repaired
+    //! surface that fails is an Error(INTERNAL)); not measured when it is
+    //! the input's own.
+    Fidelity fidelity;
+    FidelityLimits fidelity_limits;
     double voxel_size = 0.0;
     double volume_solid = 0.0;   //!< mm³ enclosed by the outer surface
     double volume_shell = 0.0;   //!< mm³ of material left

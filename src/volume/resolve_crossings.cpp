@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <numeric>
+#include <utility>
 
 #include "volume/clean_solid.h"
 #include "volume/cut_along_crossings.h"
@@ -25,6 +26,14 @@ std::optional<Mesh> resolve_crossings(const Mesh& mesh, const std::vector<std::p
                                       Progress& progress) {
     progress.stage("resolve crossings");
     if (crossings.empty() || crossings.size() > max_crossing_pairs(mesh.triangles.size())) return std::nullopt;
+    // A surface stored inside out (a negative volume) bounds {w <= -1}: its
+    // triangles turned round bound {w >= 1}, the same solid facing outward.
+    // The crossing pairs name the same triangles either way.
+    if (signed_volume(mesh) < 0.0) {
+        Mesh turned = mesh;
+        for (Triangle& t : turned.triangles) std::swap(t[1], t[2]);
+        return resolve_crossings(turned, crossings, progress);
+    }
     const std::optional<CutSurface> surface = cut_along_crossings(mesh, crossings);
     if (!surface) return std::nullopt;
     progress.update(0.2);

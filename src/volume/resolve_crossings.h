@@ -2,7 +2,8 @@
 //! triangles: a closed, oriented 2-manifold without degenerate triangles
 //! (clean_solid.h finds these, with the crossing pairs), such as overlapping
 //! shells or a fold through itself. The result is the boundary of the region
-//! of winding number ≥ 1 (inside at least one shell), cut out of the input's
+//! of winding number ≥ 1 (inside at least one shell; for a surface stored
+//! inside out, a negative volume, ≤ −1: its solid, facing outward), cut out of the input's
 //! own triangles: the crossing triangles are split along their intersection
 //! curves (CGAL's autorefinement, on them alone), the surface falls into
 //! patches between those curves, and a patch is kept when the winding number

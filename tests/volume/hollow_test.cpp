@@ -284,6 +284,41 @@ TEST(Hollow, CrossingShellsKeepTheExactSurfaceOfTheirUnion) {
     }
 }
 
+// A part made of many overlapping shells, every third stored inside out,
+// and the same part wholly inside out: the outer surface encloses the union
+// of the boxes (lattice cells, counted exactly), within a voxel's worth of
+// its area, and lies on it, whichever path made it (fidelity gate).
+TEST(Hollow, ManyOverlappingShellsSomeInsideOutKeepTheirUnion) {
+    Mesh part;
+    std::vector<std::array<int, 6>> boxes;  // x0 y0 z0 x1 y1 z1, mm
+    for (int i = 0; i < 40; ++i) boxes.push_back({i, (i * 7) % 5, 0, i + 4, (i * 7) % 5 + 6, 6 + (i % 3) * 2});
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        const auto& b = boxes[i];
+        const Mesh box = test::make_box({double(b[0]), double(b[1]), double(b[2])},
+                                        {double(b[3]), double(b[4]), double(b[5])});
+        part = test::merged(part, i % 3 == 2 ? test::flipped(box) : box);
+    }
+    double union_volume = 0;
+    for (int x = 0; x < 44; ++x)
+        for (int y = 0; y < 11; ++y)
+            for (int z = 0; z < 10; ++z)
+                union_volume += std::any_of(boxes.begin(), boxes.end(), [&](const std::array<int, 6>& b) {
+                    return x >= b[0] && x < b[3] && y >= b[1] && y < b[4] && z >= b[2] && z < b[5];
+                });
+    const Mesh inside_out = test::flipped(part);
+    for (const Mesh* input : std::vector<const Mesh*>{&part, &inside_out}) {
+        Progress progress;
+        const HollowResult result = hollow(*input, options_with(1.0, 0.25), progress);
+        const Inspected shells = inspect(result.mesh);
+        expect_valid_shells(shells, result.outer_surface.c_str());
+        EXPECT_EQ(shells.outer_shells, 1);
+        double area = 0;
+        for (const Triangle3& t : shells.outer) area += std::sqrt(t.squared_area());
+        EXPECT_NEAR(shells.outer_volume, union_volume, 0.25 * area) << result.outer_surface;
+        EXPECT_TRUE(result.outer_surface == "input" || result.fidelity.passed) << result.fidelity.defect;
+    }
+}
+
 TEST(Hollow, SmallCavitiesAreFilled) {
     const Mesh two = test::merged(test::make_sphere({0, 0, 0}, 15, 4), test::make_sphere({40, 0, 0}, 5, 4));
     Progress progress;

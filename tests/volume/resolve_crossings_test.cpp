@@ -1,8 +1,9 @@
 // Resolving crossing triangles, checked with CGAL alone (surface mesh,
 // self-intersection test, AABB distances, side of triangle mesh): the
 // result is closed, crosses nothing, lies on the input's triangles, and is
-// the boundary of the input's inside. Inputs with too many crossings are left
-// to the repair; cancellation throws.
+// the boundary of the input's inside, facing outward also for an input
+// stored inside out. Inputs with too many crossings are left to the repair;
+// cancellation throws.
 #include "volume/resolve_crossings.h"
 
 #include <gtest/gtest.h>
@@ -141,6 +142,34 @@ TEST(ResolveCrossings, DragonKeepsItsSurfaceWithoutTheFolds) {
             }
     }
     EXPECT_GT(dropped, 0);
+}
+
+// Two overlapping balls and the dragon, each stored inside out (every
+// triangle turned round): the result is the same solid facing outward —
+// the volume of the union, as resolved from the outward input, within a
+// part in 1e6, and outward (positive volume, by the divergence theorem).
+TEST(ResolveCrossings, InsideOutSurfaceGivesTheSameSolidFacingOut) {
+    Progress progress;
+    const Mesh balls =
+        test::merged(test::make_sphere({0, 0, 0}, 10, 3), test::make_sphere({7.3, 1.1, 0.7}, 9, 3));
+    const Mesh dragon = io::read_mesh(FABVDB_SHARED_DATA "/meshes/dragon_20k.obj", progress);
+    for (const Mesh* outward : {&balls, &dragon}) {
+        const SolidCheck check = check_solid(*outward, progress);
+        ASSERT_FALSE(check.crossings.empty());
+        const std::optional<Mesh> expected = resolve_crossings(*outward, check.crossings, progress);
+        ASSERT_TRUE(expected.has_value());
+        const Mesh inside_out = test::flipped(*outward);
+        const SolidCheck turned = check_solid(inside_out, progress);
+        ASSERT_EQ(turned.crossings.size(), check.crossings.size());
+        const std::optional<Mesh> resolved = resolve_crossings(inside_out, turned.crossings, progress);
+        ASSERT_TRUE(resolved.has_value());
+        const double volume = test::mesh_volume(*expected);
+        EXPECT_GT(volume, 0.0);
+        EXPECT_NEAR(test::mesh_volume(*resolved), volume, 1e-6 * volume);
+        SurfaceMesh surface = test::cgal::surface_mesh_of(*resolved);
+        EXPECT_TRUE(CGAL::is_closed(surface));
+        EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(surface));
+    }
 }
 
 // The result is the same on every run and whatever the order of the

@@ -1,7 +1,8 @@
 //! Distances from points to the surface of a triangle mesh: a CGAL AABB tree
-//! over its triangles, built once and queried many times. Used to tell
-//! whether a decomposition belongs to an input and how closely cast parts
-//! reproduce it.
+//! over its triangles, built once and queried many times, from any number
+//! of threads at once. Used to tell whether a decomposition belongs to an
+//! input, how closely cast parts reproduce it, and whether an output still
+//! is its input's model (input_fidelity.h).
 #pragma once
 
 #include <cstddef>
@@ -9,7 +10,7 @@
 
 #include "core/mesh.h"
 
-namespace fabvdb::surface {
+namespace fabvdb::volume {
 
 class SurfaceDistance {
 public:
@@ -30,4 +31,4 @@ private:
     std::unique_ptr<Tree> tree_;
 };
 
-}  // namespace fabvdb::surface
+}  // namespace fabvdb::volume

@@ -1,5 +1,5 @@
 //! Point-to-surface distances by a CGAL AABB tree (see surface_distance.h).
-#include "surface/surface_distance.h"
+#include "volume/surface_distance.h"
 
 #include <cmath>
 #include <vector>
@@ -11,7 +11,7 @@
 
 #include "core/error.h"
 
-namespace fabvdb::surface {
+namespace fabvdb::volume {
 
 namespace {
 using Kernel = CGAL::Simple_cartesian<double>;
@@ -24,7 +24,7 @@ Kernel::Point_3 point(const Vec3& p) { return {p[0], p[1], p[2]}; }
 
 struct SurfaceDistance::Tree {
     Triangles triangles;
-    fabvdb::surface::Tree tree;
+    fabvdb::volume::Tree tree;
 };
 
 SurfaceDistance::SurfaceDistance(const Mesh& mesh) : tree_(std::make_unique<Tree>()) {
@@ -48,4 +48,4 @@ SurfaceDistance::Nearest SurfaceDistance::nearest(const Vec3& p) const {
     return result;
 }
 
-}  // namespace fabvdb::surface
+}  // namespace fabvdb::volume

@@ -10,13 +10,13 @@
 
 #include "core/error.h"
 #include "support/shapes.h"
-#include "surface/surface_distance.h"
+#include "volume/surface_distance.h"
 
 namespace {
 
 using fabvdb::Mesh;
 using fabvdb::Vec3;
-using fabvdb::surface::SurfaceDistance;
+using fabvdb::volume::SurfaceDistance;
 using fabvdb::test::make_box;
 
 TEST(SurfaceDistance, OneTriangleByRegion) {

@@ -1,0 +1,320 @@
+//! The fidelity gate (see input_fidelity.h): area samples of the input to
+//! the output's surface, the far ones told apart by the input's winding
+//! number, and the enclosed volumes compared.
+#include "volume/input_fidelity.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include <openvdb/tools/Interpolation.h>
+#include <tbb/parallel_for.h>
+
+#include "core/error.h"
+#include "core/vec3_ops.h"
+#include "volume/orient_soup.h"
+#include "volume/surface_distance.h"
+#include "volume/winding_number.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+struct Sample {
+    Vec3 point;
+    Vec3 normal;  // unit; zero on a degenerate triangle
+    uint32_t triangle;
+};
+
+//! kFidelitySamples points uniform by area over the input's triangles.
+std::vector<Sample> area_samples(const Mesh& mesh) {
+    std::vector<double> cumulative(mesh.triangles.size());
+    double total = 0.0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        total += triangle_area(mesh, mesh.triangles[t]);
+        cumulative[t] = total;
+    }
+    std::vector<Sample> samples;
+    if (!(total > 0.0)) return samples;
+    std::mt19937_64 random(20261207);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    samples.reserve(kFidelitySamples);
+    for (size_t i = 0; i < kFidelitySamples; ++i) {
+        const double at = unit(random) * total;
+        const size_t t = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin());
+        const size_t index = std::min(t, mesh.triangles.size() - 1);
+        const Triangle& tri = mesh.triangles[index];
+        const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+        double u = unit(random), v = unit(random);
+        if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
+        const Vec3 n = cross(b - a, c - a);
+        const double length = norm(n);
+        samples.push_back({a + u * (b - a) + v * (c - a), length > 0.0 ? (1.0 / length) * n : Vec3{0, 0, 0},
+                           uint32_t(index)});
+    }
+    return samples;
+}
+
+//! A triangle's corners as a float file stores them, hashed in no order:
+//! the same for a triangle an output kept from the input (rounded to floats
+//! or not, turned round or not); 64 bits make a collision negligible.
+uint64_t corner_hash(const Mesh& mesh, const Triangle& t) {
+    uint64_t sum = 0;
+    for (uint32_t v : t) {
+        uint64_t h = 0x9e3779b97f4a7c15ull;
+        for (double x : mesh.vertices[v]) {
+            const float f = float(x);
+            uint32_t bits;
+            std::memcpy(&bits, &f, sizeof bits);
+            h = (h ^ bits) * 0xbf58476d1ce4e5b9ull;
+            h ^= h >> 31;
+        }
+        sum += h;
+    }
+    return sum;
+}
+
+std::vector<uint64_t> sorted_hashes(const Mesh& mesh) {
+    std::vector<uint64_t> hashes;
+    hashes.reserve(mesh.triangles.size());
+    for (const Triangle& t : mesh.triangles) hashes.push_back(corner_hash(mesh, t));
+    std::sort(hashes.begin(), hashes.end());
+    return hashes;
+}
+
+bool holds(const std::vector<uint64_t>& sorted, uint64_t hash) {
+    return std::binary_search(sorted.begin(), sorted.end(), hash);
+}
+
+//! The radical inverse of i in `base`: the Halton sequence's coordinate.
+double radical_inverse(size_t i, unsigned base) {
+    double inverse = 0.0, digit = 1.0 / base;
+    for (; i > 0; i /= base, digit /= base) inverse += double(i % base) * digit;
+    return inverse;
+}
+
+std::string figure(double x) {
+    std::ostringstream text;
+    text.precision(3);
+    text << x;
+    return text.str();
+}
+
+}  // namespace
+
+FidelityLimits exact_limits(const Mesh& input) {
+    FidelityLimits limits;
+    limits.distance = 1e-4 * bounding_box(input).diagonal();
+    limits.far_share = 0.005;
+    limits.volume = false;
+    return limits;
+}
+
+FidelityLimits voxel_limits(double voxel) {
+    FidelityLimits limits;
+    limits.distance = 2.0 * voxel;
+    limits.far_share = 0.02;
+    return limits;
+}
+
+void require_faithful(const Fidelity& fidelity, const std::string& input_name, const std::string& what) {
+    if (fidelity.passed) return;
+    throw Error(FABVDB_ERR_INTERNAL, input_name + ": the " + what + " is not the input's model: " + fidelity.defect +
+                                         "; nothing was written");
+}
+
+namespace {
+
+Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLimits& limits, Progress& progress,
+                         const openvdb::FloatGrid* level_set);
+
+}  // namespace
+
+Fidelity measure_fidelity(const Mesh& input, const Mesh& output, const FidelityLimits& limits,
+                          Progress& progress, const openvdb::FloatGrid* level_set) {
+    progress.stage("fidelity to the input");
+    Fidelity result = measure_against(input, output, limits, progress, level_set);
+    if (result.passed || input.triangles.empty() || output.triangles.empty()) return result;
+    // Shells wound every which way have no one solid by their winding
+    // number (an inside-out box overlapping an outward one cancels it): the
+    // input oriented as the repair orients it (orient_soup.h) decides.
+    const Mesh oriented = orient_soup(input, progress);
+    if (oriented.triangles.empty()) return result;
+    Fidelity again = measure_against(oriented, output, limits, progress, level_set);
+    if (!again.passed) return result;
+    again.oriented_reference = true;
+    return again;
+}
+
+namespace {
+
+Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLimits& limits, Progress& progress,
+                         const openvdb::FloatGrid* level_set) {
+    Fidelity result;
+    if (input.triangles.empty() || output.triangles.empty()) {
+        result.passed = false;
+        result.defect = output.triangles.empty() ? "the output is empty" : "the input has no surface";
+        return result;
+    }
+    const std::vector<Sample> samples = area_samples(input);
+    result.samples = samples.size();
+    const BoundingBox box = bounding_box(input);
+    const double diagonal = box.diagonal();
+    const double probe = 1e-4 * diagonal;
+
+    // A first distance per sample, at no more cost than the output needs:
+    // read from its level set; else 0 on a triangle it kept from the input,
+    // and an upper bound from the triangles it did not keep. Samples that
+    // stay farther than the limit are measured exactly on the whole output.
+    std::vector<double> distance(samples.size(), 0.0);
+    if (level_set) {
+        openvdb::FloatGrid::ConstAccessor values = level_set->getConstAccessor();
+        for (size_t i = 0; i < samples.size(); ++i) {
+            const Vec3& p = samples[i].point;
+            distance[i] = std::abs(double(openvdb::tools::BoxSampler::sample(
+                values, level_set->worldToIndex(openvdb::Vec3d(p[0], p[1], p[2])))));
+        }
+    } else {
+        const std::vector<uint64_t> input_hashes = sorted_hashes(input);
+        const std::vector<uint64_t> output_hashes = sorted_hashes(output);
+        Mesh added{output.vertices, {}};
+        for (const Triangle& t : output.triangles)
+            if (!holds(input_hashes, corner_hash(output, t))) added.triangles.push_back(t);
+        std::unique_ptr<SurfaceDistance> to_added;
+        if (!added.triangles.empty()) to_added = std::make_unique<SurfaceDistance>(added);
+        for (size_t i = 0; i < samples.size(); ++i) {
+            if (holds(output_hashes, corner_hash(input, input.triangles[samples[i].triangle]))) continue;
+            distance[i] = to_added ? to_added->nearest(samples[i].point).distance
+                                   : std::numeric_limits<double>::infinity();
+        }
+    }
+    progress.check();
+    progress.update(0.2);
+
+    // Samples that may be far: those in an exempt ball, or on input surface
+    // that bounds no solid, are left out; the others are measured exactly.
+    std::unique_ptr<WindingNumber> winding;
+    const auto winding_tree = [&]() -> const WindingNumber& {
+        if (!winding) winding = std::make_unique<WindingNumber>(input);
+        return *winding;
+    };
+    const auto exempt = [&](const Vec3& p) {
+        return std::any_of(limits.exempt.begin(), limits.exempt.end(), [&](const std::pair<Vec3, double>& ball) {
+            return squared_distance(p, ball.first) <= ball.second * ball.second;
+        });
+    };
+    std::vector<size_t> unsure;
+    std::vector<char> bounds(samples.size(), 1);
+    for (size_t i = 0; i < samples.size(); ++i) {
+        if (!(distance[i] > limits.distance)) continue;
+        if (exempt(samples[i].point))
+            bounds[i] = 0;
+        else
+            unsure.push_back(i);
+    }
+    if (!unsure.empty()) {
+        const WindingNumber& w = winding_tree();
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, unsure.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t k = r.begin(); k != r.end(); ++k) {
+                const Sample& s = samples[unsure[k]];
+                const double front = std::abs(w(s.point + probe * s.normal));
+                const double back = std::abs(w(s.point - probe * s.normal));
+                const bool one_side = (front >= 0.5) != (back >= 0.5);
+                bool wall = one_side && std::abs(front - back) >= 0.5;
+                // The wall of a slit narrower than the far distance, whose
+                // other side the solid holds again within it, may close.
+                const double open = front >= 0.5 ? -1.0 : 1.0;  // towards the slit
+                for (double along : {0.5 * limits.distance, limits.distance})
+                    wall = wall && std::abs(w(s.point + open * along * s.normal)) < 0.5;
+                bounds[unsure[k]] = wall;
+            }
+        });
+        progress.check();
+        unsure.erase(std::remove_if(unsure.begin(), unsure.end(), [&](size_t i) { return !bounds[i]; }),
+                     unsure.end());
+    }
+    progress.update(0.5);
+    if (!unsure.empty()) {
+        const SurfaceDistance surface(output);
+        surface.nearest(samples[unsure[0]].point);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, unsure.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+            if (progress.cancelled()) return;
+            for (size_t k = r.begin(); k != r.end(); ++k)
+                distance[unsure[k]] = surface.nearest(samples[unsure[k]].point).distance;
+        });
+    }
+    progress.check();
+    progress.update(0.7);
+    size_t counted = 0, far_counted = 0;
+    double sum = 0.0;
+    for (size_t i = 0; i < samples.size(); ++i) {
+        if (!bounds[i]) {
+            ++result.left_out;
+            continue;
+        }
+        ++counted;
+        sum += distance[i];
+        result.max = std::max(result.max, distance[i]);
+        far_counted += distance[i] > limits.distance;
+    }
+    result.mean = counted ? sum / double(counted) : 0.0;
+    result.far_share = counted ? double(far_counted) / double(counted) : 0.0;
+    std::ostringstream defect;
+    if (result.far_share > limits.far_share)
+        defect << figure(100.0 * result.far_share) << "% of the input's surface lies farther than "
+               << figure(limits.distance) << " mm from it (at most " << figure(result.max) << " mm)";
+
+    if (limits.volume) {
+        const WindingNumber& w = winding_tree();
+        const Vec3 size = box.max - box.min;
+        std::atomic<size_t> inside{0}, unclear{0};
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, kFidelityVolumePoints, 64),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              size_t here = 0, vague = 0;
+                              for (size_t i = r.begin(); i != r.end(); ++i) {
+                                  const Vec3 unit{radical_inverse(i + 1, 2), radical_inverse(i + 1, 3),
+                                                  radical_inverse(i + 1, 5)};
+                                  const Vec3 p{box.min[0] + unit[0] * size[0], box.min[1] + unit[1] * size[1],
+                                               box.min[2] + unit[2] * size[2]};
+                                  const double magnitude = std::abs(w(p));
+                                  here += magnitude >= 0.5;
+                                  vague += magnitude > 0.25 && magnitude < 0.75;
+                              }
+                              inside += here;
+                              unclear += vague;
+                          });
+        progress.check();
+        // Where a tenth of the solid's points have a winding number between
+        // ¼ and ¾ (a soup wound every which way, a scan's missing side), it
+        // does not tell the solid's volume: not compared.
+        result.volume_compared = double(unclear) <= 0.1 * double(std::max<size_t>(inside, 1));
+        const double box_volume = size[0] * size[1] * size[2];
+        const double n = double(kFidelityVolumePoints);
+        const double share = std::clamp(double(inside) / n, 1.0 / n, 1.0 - 1.0 / n);
+        double area = 0.0;
+        for (const Triangle& t : input.triangles) area += triangle_area(input, t);
+        result.input_volume = double(inside) / n * box_volume;
+        result.output_volume = signed_volume(output);
+        result.volume_tolerance = limits.distance * area + 4.0 * box_volume * std::sqrt(share * (1.0 - share) / n);
+        if (result.volume_compared &&
+            std::abs(result.output_volume - result.input_volume) > result.volume_tolerance) {
+            if (defect.tellp() > 0) defect << "; ";
+            defect << "it encloses " << figure(result.output_volume) << " mm³ where the input encloses about "
+                   << figure(result.input_volume) << " mm³";
+        }
+    }
+    result.defect = defect.str();
+    result.passed = result.defect.empty();
+    progress.update(1.0);
+    return result;
+}
+
+}  // namespace
+
+}  // namespace fabvdb::volume

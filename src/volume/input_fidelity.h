@@ -1,0 +1,107 @@
+//! The fidelity gate: whether a solid a command derived from its input still
+//! is the input's model, beside the validity check of what it writes
+//! (clean_solid.h): a closed, outward, uncrossed mesh can still be an
+//! 8-triangle sliver of the scan it came from.
+//! Measures, at kFidelitySamples points spread over the input's surface by area (a
+//! fixed seed: the same figures on every run), the distance to the output's
+//! surface. A point farther than `limits.distance` counts against the output
+//! only where the input's surface bounds the solid it stands for: the
+//! generalized winding number (winding_number.h) 1e-4 of the diagonal
+//! behind and in front of it, along its triangle's normal, is at least ½ in
+//! magnitude on exactly one side and the two differ by at least ½ (the inner
+//! faces of overlapping shells, and sheets open on both sides, bound
+//! nothing), and the open side stays open half and all of `limits.distance`
+//! away (the walls of a slit narrower than that, such as the gaps between
+//! the convex pieces of a VHACD mesh, may close). The output fails when more than `limits.far_share` of the
+//! solid's surface is far, or, with `limits.volume`, when the volume it
+//! encloses and the input's solid {|w| ≥ ½} (estimated at kFidelityVolumePoints of a
+//! Halton sequence over the input's bounding box) differ by more than
+//! `limits.distance` × the input's area plus four standard errors of the
+//! estimate — unless, at a tenth as many of those points as lie in the
+//! solid, the winding number is between ¼ and ¾ (a soup wound every which
+//! way, a scan missing a side): it does not tell the volume there, and the
+//! volumes are not compared. An output that fails is measured again against
+//! the input oriented as the repair orients it (orient_soup.h: each piece
+//! outward, voids inward), whose winding number tells one solid where shells
+//! wound every which way cancel (an inside-out box overlapping an outward
+//! one): it passes when that passes.
+//! A sample's distance is measured exactly only where a cheaper first look
+//! says it may be far: read from the level set the output was meshed from;
+//! or, for a mesh, 0 on a triangle the output kept from the input (the same
+//! corners as floats) and an upper bound from the triangles it did not.
+//! Costs a hash of both meshes' triangles (or a level-set lookup per
+//! sample), an AABB tree over the triangles the output did not keep, one over
+//! the whole output only when some sample may be far, a winding-number tree
+//! over the input only when some sample is far or for the volume, two winding
+//! numbers per far sample and kFidelityVolumePoints for the volume; queries
+//! in parallel. Reports progress; throws Error(CANCELLED).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <openvdb/openvdb.h>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+
+namespace fabvdb::volume {
+
+struct FidelityLimits {
+    double distance = 0.0;   //!< mm: input surface farther from the output is far
+    double far_share = 0.0;  //!< the largest share of the solid's surface that may be far
+    bool volume = true;      //!< also compare the enclosed volumes (outputs that keep the input's solid)
+    //! Balls (centre, radius in mm) where the output differs from the input
+    //! by design, such as drilled holes: samples in them are left out.
+    std::vector<std::pair<Vec3, double>> exempt;
+};
+
+struct Fidelity {
+    double max = 0.0;        //!< mm, over the samples on the solid's surface
+    double mean = 0.0;       //!< mm, likewise
+    double far_share = 0.0;  //!< of the samples on the solid's surface, the share farther than limits.distance
+    size_t samples = 0;      //!< taken on the input's surface
+    size_t left_out = 0;     //!< far samples on surface that bounds no solid (inner faces, sheets) or exempt
+    double input_volume = 0.0;      //!< mm³, estimated (0 when not compared)
+    double output_volume = 0.0;     //!< mm³, exact (0 when not compared)
+    double volume_tolerance = 0.0;  //!< mm³
+    //! false when the input's winding number does not tell its volume (see above)
+    bool volume_compared = false;
+    //! The figures are against the input oriented as the repair orients it
+    //! (orient_soup.h): against the input as given it failed.
+    bool oriented_reference = false;
+    bool passed = true;
+    //! When not passed: what is wrong, in words, with the figures.
+    std::string defect;
+};
+
+//! Points taken on the input's surface.
+constexpr size_t kFidelitySamples = 8192;
+//! Points of the Halton sequence the input's volume is estimated at.
+constexpr size_t kFidelityVolumePoints = 4096;
+
+//! For an output cut out of the input's own triangles (mesh-level repair,
+//! crossings resolved): far is 1e-4 of the input's diagonal, and at most
+//! 0.5% of the surface may be; the volume is not compared (the output's
+//! surface lies on the input's, and its validity is checked apart).
+FidelityLimits exact_limits(const Mesh& input);
+//! For an output meshed from a level set of voxel `voxel`: far is two
+//! voxels, and at most 2% of the surface may be (features thinner than a
+//! voxel close or vanish).
+FidelityLimits voxel_limits(double voxel);
+
+//! `output`: a closed, outward-oriented mesh (the solid as written; for a
+//! hollowed part its outer shells). An empty input or output fails.
+//! `level_set`: the level set `output` was meshed from, if any: a sample's
+//! distance is then first read from it (trilinear), and measured on the
+//! mesh only where it says far.
+Fidelity measure_fidelity(const Mesh& input, const Mesh& output, const FidelityLimits& limits,
+                          Progress& progress, const openvdb::FloatGrid* level_set = nullptr);
+
+//! Throws Error(INTERNAL), "NAME: the WHAT is not the input's model: DEFECT",
+//! when `fidelity` did not pass.
+void require_faithful(const Fidelity& fidelity, const std::string& input_name, const std::string& what);
+
+}  // namespace fabvdb::volume
