@@ -1,6 +1,6 @@
 /* fabvdb.c — entry point of the `fabvdb` command: dispatches to a subcommand
- * (the table of commands.c), and answers `help`, `help COMMAND`, `--help`, `--version`,
- * and the generated reference (tools/reference.h): `help --markdown
+ * (the table of commands.c), and answers `help`, `help COMMAND`, `--help`,
+ * `--version`, and the generated reference (reference.h): `help --markdown
  * [COMMAND|--common]` and `help --man`. */
 #include <stdio.h>
 #include <string.h>
@@ -13,7 +13,8 @@ static void print_overview(void) {
     printf("fabvdb %s — prepares 3D models for fabrication.\n\n"
            "Usage: fabvdb COMMAND INPUT [options]\n\nCommands:\n",
            fabvdb_version_string());
-    for (size_t i = 0; i < fabvdb_command_count; ++i) printf("  %-12s %s\n", fabvdb_commands[i]->name, fabvdb_commands[i]->summary);
+    for (size_t i = 0; i < fabvdb_command_count; ++i)
+        printf("  %-12s %s\n", fabvdb_commands[i]->name, fabvdb_commands[i]->summary);
     printf("\n'fabvdb help COMMAND' (or 'fabvdb COMMAND --help') explains a command and its options.\n"
            "Lengths take units: 3mm, 0.3cm, 0.1in, or 2%% of the model's bounding-box diagonal.\n"
            "Outputs appear only when complete. The full reference: 'man fabvdb' and docs/ in the sources.\n"

@@ -1,5 +1,5 @@
 /* reference.c — prints the command reference (markdown for README.md and
- * docs/, roff for the man page) from the option tables of tools/cmd_*.c and
+ * docs/, roff for the man page) from the option tables of the commands (tools/cli/commands.c) and
  * cli.c; see reference.h. Text is escaped for its target: '|' in markdown
  * table cells, '\', '-' and leading dots in roff. */
 #include "reference.h"

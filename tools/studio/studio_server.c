@@ -515,7 +515,8 @@ static fabvdb_status op_rerun(const request* r) {
     char extra;
     if (sscanf(r->args, "%lf %d %lf %c", &gamma, &parts, &draft, &extra) != 3 || !(gamma > 0) || parts < 0 ||
         parts > 1000 || !(draft >= 0 && draft <= 30)) {
-        send_error(s, r->conn, r->seq, r->op, "rerun takes GAMMA > 0, PARTS in 0..1000 (0: automatic), DRAFT in [0, 30]");
+        send_error(s, r->conn, r->seq, r->op,
+                   "rerun takes GAMMA > 0, PARTS in 0..1000 (0: automatic), DRAFT in [0, 30]");
         return FABVDB_OK;
     }
     fabvdb_decompose_options_init(&s->rerun_options);
