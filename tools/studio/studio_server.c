@@ -1,6 +1,9 @@
 /* studio_server.c — civetweb handlers of `fabvdb studio`: the checks every
  * request passes (token, Host, Origin, size), the embedded files, the
- * WebSocket protocol of studio_server.h, and the worker thread for long work.
+ * WebSocket protocol of studio_server.h (each operation a function, found in
+ * one table), and the worker thread for long work (after molds, the pieces
+ * the mold report names: studio_molded.h). Replies are JSON written with
+ * tools/common/json.h into memory.
  * One mutex guards the session; `busy` marks long work, during which only
  * "cancel" is taken. Costs: an edit answers with one labels frame (9 bytes a
  * triangle) and a state message; the mesh is sent again only when S_low moved. */
