@@ -144,6 +144,57 @@ static int submit_to_slurm(const cli_run* run, const batch_plan* plan, const int
     return code ? code : counts.first_failure;
 }
 
+/* The usage errors of a run with a job file. Returns 0, or 1 after printing one. */
+static int check_options(const cli_run* run) {
+    const int slurm = cli_get(run, "--slurm")->given;
+    if (run->positional_count == 0)
+        return cli_usage_error(run, "missing the job file (usage: fabvdb batch %s)", run->command->usage);
+    if (cli_get(run, "--jobs")->number < 0) return cli_usage_error(run, "--jobs must be 0 or more");
+    if (cli_get(run, "--max-running")->number < 0) return cli_usage_error(run, "--max-running must be 0 or more");
+    if (cli_get(run, "--task")->set && slurm) return cli_usage_error(run, "--task runs tasks here: not with --slurm");
+    if (!slurm && (cli_get(run, "--wait")->given || cli_get(run, "--partition")->set || cli_get(run, "--time")->set ||
+                   cli_get(run, "--mem")->set || cli_get(run, "--max-running")->given))
+        return cli_usage_error(run, "--wait, --partition, --time, --mem and --max-running go with --slurm");
+    if (cli_get(run, "--out")->set && !cli_get(run, "--inputs")->set)
+        return cli_usage_error(run, "--out is the output folder of a recipe: give --inputs");
+    return 0;
+}
+
+/* The tasks of the plan to run into todo (plan order), their count
+ * returned: all of them, or with --resume those without a current record
+ * (and, for Slurm, not still in its queue); *skipped counts the others. */
+static int tasks_to_run(const cli_run* run, const batch_plan* plan, const char* state, int slurm, int* todo,
+                        int* skipped) {
+    const int resume = cli_get(run, "--resume")->given;
+    batch_slurm_jobs* submitted = slurm && resume ? batch_slurm_jobs_read(state) : NULL;
+    int count = 0;
+    *skipped = 0;
+    for (int k = 0; k < plan->task_count; ++k) {
+        if (resume) {
+            char path[8192 + 64];
+            const char* why = NULL;
+            batch_record_path(state, plan->tasks[k].name, path, sizeof path);
+            if (batch_record_current(path, &plan->tasks[k], &why)) {
+                ++*skipped;
+                continue;
+            }
+            char slurm_job[64], reason[1024];
+            if (submitted && batch_slurm_reason(submitted, plan->tasks[k].name, slurm_job, sizeof slurm_job, reason,
+                                                sizeof reason) == 2) {
+                cli_note(run, "batch: %s is still in Slurm's queue (%s): not submitted again", plan->tasks[k].name,
+                         reason);
+                ++*skipped;
+                continue;
+            }
+        }
+        todo[count++] = k;
+    }
+    batch_slurm_jobs_free(submitted);
+    if (*skipped)
+        cli_note(run, "batch: %d of %d task(s) are done already and unchanged", *skipped, plan->task_count);
+    return count;
+}
+
 static int run_batch(cli_run* run) {
     /* SIGINT and SIGTERM wait until the scheduler or the Slurm wait takes
      * them (sigtimedwait), so an interruption is never lost in between. */
@@ -160,20 +211,13 @@ static int run_batch(cli_run* run) {
         batch_counts counts;
         return batch_summary(status->text, 1, report->set ? report->text : NULL, &counts);
     }
-    if (run->positional_count == 0) return cli_usage_error(run, "missing the job file (usage: fabvdb batch %s)",
-                                                           run->command->usage);
+    const int usage = check_options(run);
+    if (usage) return usage;
     const cli_value* jobs_value = cli_get(run, "--jobs");
-    if (jobs_value->number < 0) return cli_usage_error(run, "--jobs must be 0 or more");
-    if (cli_get(run, "--max-running")->number < 0) return cli_usage_error(run, "--max-running must be 0 or more");
     const cli_value* task_names = cli_get(run, "--task");
-    if (task_names->set && slurm) return cli_usage_error(run, "--task runs tasks here: not with --slurm");
-    if (!slurm && (cli_get(run, "--wait")->given || cli_get(run, "--partition")->set || cli_get(run, "--time")->set ||
-                   cli_get(run, "--mem")->set || cli_get(run, "--max-running")->given))
-        return cli_usage_error(run, "--wait, --partition, --time, --mem and --max-running go with --slurm");
     const char* job = run->positional[0];
     const cli_value* inputs = cli_get(run, "--inputs");
     const cli_value* out = cli_get(run, "--out");
-    if (out->set && !inputs->set) return cli_usage_error(run, "--out is the output folder of a recipe: give --inputs");
 
     batch_plan plan;
     char error[4096];
@@ -224,29 +268,7 @@ static int run_batch(cli_run* run) {
         batch_plan_free(&plan);
         return CLI_EXIT_BAD_INPUT;
     }
-    batch_slurm_jobs* submitted = slurm && cli_get(run, "--resume")->given ? batch_slurm_jobs_read(state) : NULL;
-    for (int k = 0; k < plan.task_count; ++k) {
-        if (cli_get(run, "--resume")->given) {
-            char path[8192 + 64];
-            const char* why = NULL;
-            batch_record_path(state, plan.tasks[k].name, path, sizeof path);
-            if (batch_record_current(path, &plan.tasks[k], &why)) {
-                ++skipped;
-                continue;
-            }
-            char slurm_job[64], reason[1024];
-            if (submitted && batch_slurm_reason(submitted, plan.tasks[k].name, slurm_job, sizeof slurm_job, reason,
-                                                sizeof reason) == 2) {
-                cli_note(run, "batch: %s is still in Slurm's queue (%s): not submitted again", plan.tasks[k].name,
-                         reason);
-                ++skipped;
-                continue;
-            }
-        }
-        todo[todo_count++] = k;
-    }
-    batch_slurm_jobs_free(submitted);
-    if (skipped) cli_note(run, "batch: %d of %d task(s) are done already and unchanged", skipped, plan.task_count);
+    todo_count = tasks_to_run(run, &plan, state, slurm, todo, &skipped);
     if (slurm) {
         const cli_value* mem = cli_get(run, "--mem");
         batch_slurm_options options = {cli_get(run, "--partition")->set ? cli_get(run, "--partition")->text : NULL,
