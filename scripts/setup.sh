@@ -14,6 +14,7 @@ packages=(
   python3 time
   libcivetweb-dev chromium
   groff-base man-db  # the man page: rendered by the reference test, read by `man` after install
+  ccache  # compiler cache: a second clone on the same machine builds from it (docs/building.md)
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -31,9 +32,10 @@ echo "== installing the studio's npm packages (npm ci in studio/)"
 (cd studio && npm ci --no-audit --no-fund --loglevel=error)
 
 echo "== building fabvdb in build/"
-launcher=()
-if command -v ccache >/dev/null 2>&1; then
-  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
+# Every compiler call goes through ccache with this clone as its base_dir:
+# paths inside the clone are hashed relative to the build folder, so another
+# clone of the same sources, anywhere on the machine, hits the same cache.
+launcher="env;CCACHE_BASEDIR=$PWD;ccache"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  "-DCMAKE_CXX_COMPILER_LAUNCHER=$launcher" "-DCMAKE_C_COMPILER_LAUNCHER=$launcher" >/dev/null
 cmake --build build -j 2

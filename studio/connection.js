@@ -1,5 +1,5 @@
 // connection.js — the studio's one WebSocket: sends "SEQ OP ARGS" text
-// messages (tools/studio_server.h), decodes the binary frames (S_low mesh,
+// messages (tools/studio/studio_server.h), decodes the binary frames (S_low mesh,
 // labels/sides/deformation, draft map, mold pieces) and hands every message
 // to the listeners given. The token is the first segment of the page's path.
 
