@@ -14,6 +14,7 @@ packages=(
   python3 time
   libcivetweb-dev chromium
   groff-base man-db  # the man page: rendered by the reference test, read by `man` after install
+  python3-dev pybind11-dev python3-numpy python3-pytest  # the Python package and its tests
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
