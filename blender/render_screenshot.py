@@ -8,6 +8,7 @@ import math
 import sys
 
 import bpy
+from mathutils import Vector
 
 ZIP, SPOT, OUT = sys.argv[sys.argv.index("--") + 1:]
 
@@ -41,22 +42,32 @@ parts.location.x += 0.05
 for obj in (heat, parts):
     obj.data.polygons.foreach_set("use_smooth", [True] * len(obj.data.polygons))
 
+# Frame both objects from the front, a little above.
+corners = [obj.matrix_world @ Vector(c) for obj in (heat, parts) for c in obj.bound_box]
+low = Vector([min(c[i] for c in corners) for i in range(3)])
+high = Vector([max(c[i] for c in corners) for i in range(3)])
+centre, width = (low + high) / 2, max(high.x - low.x, 2.2 * (high.z - low.z))
 camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
 scene.collection.objects.link(camera)
-camera.location = (0.0, -0.26, 0.12)
-camera.rotation_euler = (math.radians(68), 0.0, 0.0)
+tilt = math.radians(12)
+distance = 1.9 * width
+camera.location = centre + Vector((0.0, distance * math.cos(tilt), distance * math.sin(tilt)))
+camera.rotation_euler = (math.radians(90) - tilt, 0.0, math.radians(180))
 scene.camera = camera
 light = bpy.data.objects.new("sun", bpy.data.lights.new("sun", 'SUN'))
-light.data.energy = 4.0
-light.rotation_euler = (math.radians(40), math.radians(15), math.radians(30))
+light.data.energy = 3.0
+light.rotation_euler = (math.radians(35), math.radians(10), math.radians(160))
 scene.collection.objects.link(light)
 world = bpy.data.worlds.new("world")
 world.use_nodes = True
-world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.8, 0.82, 0.85, 1.0)
+world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.55, 0.57, 0.6, 1.0)
+world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.6
+scene.view_settings.view_transform = 'Standard'  # the heat map's colours as the legend has them
 scene.world = world
 scene.render.engine = 'CYCLES'
 scene.cycles.device = 'CPU'
-scene.cycles.samples = 32
+scene.cycles.samples = 48
+scene.cycles.use_denoising = False  # Debian's blender is built without OpenImageDenoise
 scene.render.resolution_x, scene.render.resolution_y = 1200, 560
 scene.render.filepath = OUT
 bpy.ops.render.render(write_still=True)
