@@ -62,11 +62,14 @@ class FabvdbJob:
         def progress(stage, fraction):
             STATE["stage"], STATE["fraction"] = stage, fraction
 
+        # The thread sees plain Python objects only, never the operator (bpy is main-thread only).
+        work, inputs, ctx, outcome = self.work, self._inputs, self._ctx, self._outcome
+
         def run():
             try:
-                self._outcome["result"] = self.work(self._inputs, self._ctx, progress)
+                outcome["result"] = work(inputs, ctx, progress)
             except BaseException as error:  # handed to the main thread
-                self._outcome["error"] = error
+                outcome["error"] = error
 
         self._thread = threading.Thread(target=run, daemon=True)
         self._thread.start()

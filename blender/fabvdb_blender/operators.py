@@ -222,7 +222,7 @@ class SessionJob(FabvdbJob):
         obj = context.active_object
         entry = SESSIONS[obj.name]
         return {"name": obj.name, "session": entry["session"], "scale": entry["scale"],
-                "edit": self.read_edit(context, obj, entry["scale"])}
+                "edit": self.read_edit(context, obj, entry["scale"]), "apply": self.apply}
 
     def job_context(self, inputs):
         return inputs["session"].context
@@ -231,7 +231,7 @@ class SessionJob(FabvdbJob):
         session = inputs["session"]
         session.progress = progress
         try:
-            self.apply(session, inputs["edit"])
+            inputs["apply"](session, inputs["edit"])
         finally:
             session.progress = None
         return None
