@@ -15,6 +15,7 @@ packages=(
   libcivetweb-dev chromium
   groff-base man-db  # the man page: rendered by the reference test, read by `man` after install
   ccache  # compiler cache: a second clone on the same machine builds from it (docs/building.md)
+  python3-dev pybind11-dev python3-numpy python3-pytest  # the Python package and its tests
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -22,6 +23,9 @@ as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 echo "== installing dependencies (apt-get)"
 export DEBIAN_FRONTEND=noninteractive
 as_root apt-get update -qq
+# The Blender add-on's headless test: Debian ships blender for amd64 and arm64
+# only; elsewhere the test reports itself skipped.
+if apt-cache show blender >/dev/null 2>&1; then packages+=(blender); fi
 as_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
 # The studio's page and its browser tests use npm packages (studio/package-lock.json).
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
