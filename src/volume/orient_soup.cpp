@@ -76,20 +76,30 @@ struct ReversalVisitor : CGAL::Polygon_mesh_processing::Default_orientation_visi
 };
 
 // A piece that the input oriented inward (by the area of its triangles whose
-// input order disagrees with the outward one: `as_given`) and that lies
+// input order disagrees with the outward one: `as_given`; for an input
+// stored inside out as a whole, agrees) and that lies
 // wholly inside the solid of the outward pieces (their winding number at
 // each of its points) is the wall of a cavity: it is turned back inward.
 // Other pieces stay outward.
 void keep_cavities_inward(Mesh& oriented, const std::vector<char>& as_given, std::vector<uint32_t>& parent) {
     // Per piece (indexed by its root vertex): area whose input order agrees
-    // with the outward one, and total area.
+    // with the outward one, and total area. An input stored inside out as a
+    // whole (most of its area inward: its voids' walls then face out) is
+    // read turned round.
     std::vector<double> agreeing(oriented.vertices.size(), 0.0), total(oriented.vertices.size(), 0.0);
+    double all_agreeing = 0.0, all = 0.0;
+    for (size_t i = 0; i < oriented.triangles.size(); ++i) {
+        const double area = triangle_area(oriented, oriented.triangles[i]);
+        all += area;
+        if (as_given[i]) all_agreeing += area;
+    }
+    const bool turned = all_agreeing < 0.5 * all;
     for (size_t i = 0; i < oriented.triangles.size(); ++i) {
         const Triangle& t = oriented.triangles[i];
         const uint32_t root = find_root(parent, t[0]);
         const double area = triangle_area(oriented, t);
         total[root] += area;
-        if (as_given[i]) agreeing[root] += area;
+        if (bool(as_given[i]) != turned) agreeing[root] += area;
     }
     std::vector<char> cavity(oriented.vertices.size(), 0);
     bool any_inward = false;

@@ -7,7 +7,8 @@
 //! negative is flipped, so inverted shells count as solids —
 //! except the walls of cavities: a piece the input oriented inward that lies
 //! wholly inside the other pieces' solid stays inward, so hollow parts stay
-//! hollow.
+//! hollow (an input stored inside out as a whole, most of its area inward,
+//! is read turned round: its cavities' walls are the pieces it has outward).
 //! Unreferenced vertices are dropped. Costs a sort of the points and one of
 //! the triangles besides CGAL's orientation, and a winding-number tree of the
 //! outward pieces when some piece came inward. Reports progress; throws

@@ -90,12 +90,20 @@ TEST(OrientSoup, InwardShellNotInsideTheSolidTurnsOutward) {
     // own, so outward (the volumes add up).
     const Mesh poking = merged(make_box({0, 0, 0}, {3, 3, 3}), flipped(make_box({2, 1, 1}, {4, 2, 2})));
     EXPECT_NEAR(mesh_volume(oriented(poking)), 27.0 + 2.0, 1e-12);
-    // A hollow box turned wholly inside out: the outer wall, given inward,
-    // is not inside anything; the inner one was given outward. Both outward.
-    const Mesh inside_out = flipped(merged(make_box({0, 0, 0}, {3, 3, 3}), flipped(make_box({1, 1, 1}, {2, 2, 2}))));
-    EXPECT_NEAR(mesh_volume(oriented(inside_out)), 27.0 + 1.0, 1e-12);
     // Only an inward shell, no solid around it: outward.
     EXPECT_NEAR(mesh_volume(oriented(flipped(make_box({1, 1, 1}, {2, 2, 2})))), 1.0, 1e-12);
+}
+
+TEST(OrientSoup, InputStoredInsideOutKeepsItsCavities) {
+    // A hollow box turned wholly inside out (most of its area inward) is
+    // read turned round: the outer wall outward, the cavity's wall, given
+    // outward, inward again — the same hollow box.
+    const Mesh hollow = merged(make_box({0, 0, 0}, {3, 3, 3}), flipped(make_box({1, 1, 1}, {2, 2, 2})));
+    EXPECT_NEAR(mesh_volume(oriented(flipped(hollow))), 27.0 - 1.0, 1e-12);
+    // Mirrored (x negated, the triangles as they were): the same.
+    Mesh mirrored = hollow;
+    for (Vec3& p : mirrored.vertices) p[0] = -p[0];
+    EXPECT_NEAR(mesh_volume(oriented(mirrored)), 27.0 - 1.0, 1e-12);
 }
 
 TEST(OrientSoup, DropsDuplicatesDegeneratesAndUnusedVertices) {
