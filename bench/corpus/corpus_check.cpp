@@ -408,7 +408,8 @@ std::vector<double> shell_volumes(const Mesh& mesh, const std::vector<uint32_t>&
 
 //! Points of the mesh's own surface that the solid it encloses holds on
 //! both sides: |winding number| ≥ ½ at `step` behind the point along its
-//! triangle's normal, and in front either at `step` (surface of a shell
+//! triangle's normal (in front, for a surface stored inside out, whose
+//! normal is then taken the other way), and in front either at `step` (surface of a shell
 //! inside another, e.g. overlapping shells) or at `step` past where the ray
 //! along the normal meets the surface again within `gap` (the wall of a slit
 //! narrower than `gap`, which no fabrication keeps open). Only the points
@@ -428,7 +429,12 @@ std::vector<char> enclosed(const Mesh& mesh, const Tree& tree, const std::vector
         const double length = norm(n);
         if (length == 0) continue;
         for (double& x : n) x /= length;
-        if (!solid(points[i], n, -step)) continue;
+        // n points away from the solid: an input stored inside out has its
+        // solid in front of its triangles.
+        if (!solid(points[i], n, -step)) {
+            if (!solid(points[i], n, step)) continue;
+            for (double& x : n) x = -x;
+        }
         if (solid(points[i], n, step)) {
             inside[i] = 1;
             continue;
