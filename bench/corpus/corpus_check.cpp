@@ -29,7 +29,9 @@
 //       max_side: "buried" when that point lies inside the parts (a cast
 //       part holds more than the input there), else "uncovered".
 //       --exempt X,Y,Z,R (repeatable): input samples in these balls are left
-//       out (a drilled hole's mouth, a cavity filled); --far D (mm):
+//       out (a drilled hole's mouth, a cavity filled); --gap G (mm): the
+//       walls of slits narrower than G (at least 0.3 mm) are left out too
+//       (what a level set of voxel G / 2 may close); --far D (mm):
 //       far_fraction, the share of the area samples left in that lie
 //       farther than D.
 //   corpus_check flip IN OUT.obj
@@ -621,7 +623,7 @@ json check_cover(int argc, char** argv) {
     std::vector<Mesh> part_meshes;
     for (int i = 3; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--fit" || arg == "--exempt" || arg == "--far") {
+        if (arg == "--fit" || arg == "--exempt" || arg == "--far" || arg == "--gap") {
             if (arg == "--exempt" && i + 1 < argc) {
                 std::array<double, 4> ball;
                 if (std::sscanf(argv[i + 1], "%lf,%lf,%lf,%lf", &ball[0], &ball[1], &ball[2], &ball[3]) != 4)
@@ -657,7 +659,8 @@ json check_cover(int argc, char** argv) {
     // 0.3 mm (a mold blade that thin is under the narrowest recess resin
     // printing reproduces): no cast part can carry it. Only points farther
     // than 0.05% of the diagonal can change them, and only they are tested.
-    const double floor = 5e-4 * diagonal, step = 1e-4 * diagonal, gap = 0.3;
+    const double floor = 5e-4 * diagonal, step = 1e-4 * diagonal;
+    const double gap = std::max(0.3, std::stod(option(argc, argv, "--gap", "0")));
     const std::vector<Triangle3> input_triangles = triangles_of(input, all_triangles(input));
     const Tree input_tree(input_triangles.begin(), input_triangles.end());
     std::vector<char> area_in = enclosed(input, input_tree, area, area_source, area_distance, floor, step, gap);
