@@ -156,32 +156,34 @@ struct Outcome {
 
 using Command = Outcome (*)(fabvdb_ctx*, const fabvdb_mesh*);
 
+//! The outcome of a command that returned `status` and made `out` (freed
+//! here), whose voxel is `voxel`.
+Outcome outcome_of(fabvdb_ctx* ctx, fabvdb_status status, fabvdb_mesh* out, double voxel) {
+    Outcome o;
+    o.status = status;
+    if (status == FABVDB_OK) o.solid = mesh_of(out);
+    o.message = fabvdb_last_error(ctx);
+    o.voxel = voxel;
+    fabvdb_mesh_free(out);
+    return o;
+}
+
 Outcome repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh) {
     fabvdb_volume_options options;
     fabvdb_volume_options_init(&options);
     options.resolution = 64;
-    Outcome o;
     fabvdb_mesh* out = nullptr;
-    o.status = fabvdb_mesh_repair(ctx, mesh, &options, &out, nullptr);
-    if (o.status == FABVDB_OK) o.solid = mesh_of(out);
-    o.message = fabvdb_last_error(ctx);
-    o.voxel = 40.0 / 64;
-    fabvdb_mesh_free(out);
-    return o;
+    const fabvdb_status status = fabvdb_mesh_repair(ctx, mesh, &options, &out, nullptr);
+    return outcome_of(ctx, status, out, 40.0 / 64);
 }
 
 Outcome hollow(fabvdb_ctx* ctx, const fabvdb_mesh* mesh) {
     fabvdb_hollow_options options;
     fabvdb_hollow_options_init(&options);
     options.wall = 3.0;
-    Outcome o;
     fabvdb_mesh* out = nullptr;
-    o.status = fabvdb_mesh_hollow(ctx, mesh, &options, &out, nullptr);
-    if (o.status == FABVDB_OK) o.solid = mesh_of(out);
-    o.message = fabvdb_last_error(ctx);
-    o.voxel = 0.75;
-    fabvdb_mesh_free(out);
-    return o;
+    const fabvdb_status status = fabvdb_mesh_hollow(ctx, mesh, &options, &out, nullptr);
+    return outcome_of(ctx, status, out, 0.75);
 }
 
 Outcome drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh) {
@@ -193,14 +195,9 @@ Outcome drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh) {
     const double turns[] = {0, 0, -1, 0, 0, 1, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0};
     options.orientations = turns;
     options.orientation_count = 6;
-    Outcome o;
     fabvdb_mesh* out = nullptr;
-    o.status = fabvdb_mesh_drain(ctx, mesh, &options, &out, nullptr);
-    if (o.status == FABVDB_OK) o.solid = mesh_of(out);
-    o.message = fabvdb_last_error(ctx);
-    o.voxel = 0.75;
-    fabvdb_mesh_free(out);
-    return o;
+    const fabvdb_status status = fabvdb_mesh_drain(ctx, mesh, &options, &out, nullptr);
+    return outcome_of(ctx, status, out, 0.75);
 }
 
 //! S_low, the surface the parts are cut from; its voxel is its mean edge.
