@@ -9,7 +9,7 @@
 #include "powder/hole_candidates.h"
 #include "powder/orientation_flows.h"
 #include "powder/powder_drop.h"
-#include "powder/surface_ray_caster.h"
+#include "volume/surface_ray_caster.h"
 #include "volume/extract_mesh.h"
 
 namespace fabvdb::powder {
@@ -57,7 +57,7 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     clock.lap("hole candidates");
     if (!plan.cavities_without_site.empty()) return plan;
 
-    const SurfaceRayCaster caster(plan.cavity_surface);
+    const volume::SurfaceRayCaster caster(plan.cavity_surface);
     std::vector<Vec3> gravities;
     if (options.orientations.empty())
         gravities = thesis_directions().directions;

@@ -11,7 +11,7 @@ namespace fabvdb::powder {
 
 namespace {
 
-OrientationFlow flow_for(const CavityPatches& patches, const SurfaceRayCaster& caster, const Vec3& gravity,
+OrientationFlow flow_for(const CavityPatches& patches, const volume::SurfaceRayCaster& caster, const Vec3& gravity,
                          const TransferOptions& options) {
     OrientationFlow flow;
     flow.gravity = gravity;
@@ -50,7 +50,7 @@ OrientationFlow flow_for(const CavityPatches& patches, const SurfaceRayCaster& c
 
 }  // namespace
 
-std::vector<OrientationFlow> build_orientation_flows(const CavityPatches& patches, const SurfaceRayCaster& caster,
+std::vector<OrientationFlow> build_orientation_flows(const CavityPatches& patches, const volume::SurfaceRayCaster& caster,
                                                      const std::vector<Vec3>& gravities,
                                                      const TransferOptions& options, Progress& progress) {
     progress.stage("powder flow");

@@ -12,7 +12,7 @@
 #include "core/progress.h"
 #include "powder/cavity_patches.h"
 #include "powder/stochastic_matrix.h"
-#include "powder/surface_ray_caster.h"
+#include "volume/surface_ray_caster.h"
 #include "powder/transfer_matrix.h"
 
 namespace fabvdb::powder {
@@ -25,7 +25,7 @@ struct OrientationFlow {
     std::vector<uint32_t> main_destination;
 };
 
-std::vector<OrientationFlow> build_orientation_flows(const CavityPatches& patches, const SurfaceRayCaster& caster,
+std::vector<OrientationFlow> build_orientation_flows(const CavityPatches& patches, const volume::SurfaceRayCaster& caster,
                                                      const std::vector<Vec3>& gravities,
                                                      const TransferOptions& options, Progress& progress);
 

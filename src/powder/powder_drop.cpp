@@ -10,7 +10,7 @@
 namespace fabvdb::powder {
 
 PowderSamples drop_cavity_powder(const openvdb::FloatGrid& cavity, const CavityPatches& patches,
-                                 const SurfaceRayCaster& caster, const OrientationFlow& first, size_t max_samples,
+                                 const volume::SurfaceRayCaster& caster, const OrientationFlow& first, size_t max_samples,
                                  Progress& progress) {
     progress.stage("powder drop");
     const openvdb::CoordBBox box = cavity.evalActiveVoxelBoundingBox();

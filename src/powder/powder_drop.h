@@ -18,7 +18,7 @@
 #include "core/progress.h"
 #include "powder/cavity_patches.h"
 #include "powder/orientation_flows.h"
-#include "powder/surface_ray_caster.h"
+#include "volume/surface_ray_caster.h"
 
 namespace fabvdb::powder {
 
@@ -36,7 +36,7 @@ struct PowderSamples {
 };
 
 PowderSamples drop_cavity_powder(const openvdb::FloatGrid& cavity, const CavityPatches& patches,
-                                 const SurfaceRayCaster& caster, const OrientationFlow& first, size_t max_samples,
+                                 const volume::SurfaceRayCaster& caster, const OrientationFlow& first, size_t max_samples,
                                  Progress& progress);
 
 }  // namespace fabvdb::powder

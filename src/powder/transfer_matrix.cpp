@@ -14,7 +14,7 @@ Vec3 vec(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
 }  // namespace
 
-StochasticMatrix transfer_matrix(const CavityPatches& patches, const SurfaceRayCaster& caster, const Vec3& gravity,
+StochasticMatrix transfer_matrix(const CavityPatches& patches, const volume::SurfaceRayCaster& caster, const Vec3& gravity,
                                  const TransferOptions& options) {
     const Eigen::Vector3d g = point(gravity).normalized();
     const double floor_cosine = std::cos(options.repose_radians);

@@ -12,7 +12,7 @@
 #include "core/mesh.h"
 #include "powder/cavity_patches.h"
 #include "powder/stochastic_matrix.h"
-#include "powder/surface_ray_caster.h"
+#include "volume/surface_ray_caster.h"
 
 namespace fabvdb::powder {
 
@@ -22,7 +22,7 @@ struct TransferOptions {
     double cone_half_angle_radians = 0.13962634015954636;  // 8°
 };
 
-StochasticMatrix transfer_matrix(const CavityPatches& patches, const SurfaceRayCaster& caster, const Vec3& gravity,
+StochasticMatrix transfer_matrix(const CavityPatches& patches, const volume::SurfaceRayCaster& caster, const Vec3& gravity,
                                  const TransferOptions& options);
 
 }  // namespace fabvdb::powder

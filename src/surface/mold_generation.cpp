@@ -112,11 +112,18 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         made = sweep_all(handed.parts);
     clock.lap("sweep");
 
+    // The parts' surfaces are read off the input where they hold it.
+    const volume::SurfaceRayCaster input_rays(input);
+    volume::InputSurface input_surface;
+    input_surface.level_set = input_grid.get();
+    input_surface.mesh = &input;
+    input_surface.rays = &input_rays;
+    input_surface.orientation = signed_volume(input) < 0 ? -1 : 1;
     for (size_t p = 0; p < model.parts.size(); ++p) {
         CastPart cast;
         cast.id = model.parts[p].id;
         cast.direction = model.parts[p].direction;
-        cast.part = volume::double_height_field_mesh(*made[p], progress, input_grid.get());
+        cast.part = volume::double_height_field_mesh(*made[p], progress, &input_surface);
         if (cast.part.triangles.empty()) {
             // A sliver the other parts took whole: nothing of its own to cast.
             result.vanished_parts.push_back(cast.id);

@@ -10,7 +10,8 @@
 //!     parts (the parts already made and the restored ones still to come);
 //!     the runs other parts split off a part are handed to those parts and
 //!     all are swept again (volume/hand_over_runs.h); each is meshed as an
-//!     exact double height field (volume/sweep.h,
+//!     exact double height field whose column ends on the input surface are
+//!     the input's own crossings along the direction (volume/sweep.h,
 //!     volume/double_height_field_mesh.h);
 //!  3. its two-piece mold: RBF parting surface, gate, runner, sprue, vents,
 //!     registration keys, CGAL booleans (mold_assembly.h); or, with

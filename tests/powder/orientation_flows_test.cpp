@@ -21,7 +21,7 @@ using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::powder::CavityPatches;
 using fabvdb::powder::OrientationFlow;
-using fabvdb::powder::SurfaceRayCaster;
+using fabvdb::volume::SurfaceRayCaster;
 
 std::vector<OrientationFlow> flows_of(const CavityPatches& patches, const Mesh& mesh, const std::vector<Vec3>& gravities) {
     const SurfaceRayCaster caster(mesh);

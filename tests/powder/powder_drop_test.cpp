@@ -27,7 +27,7 @@ using fabvdb::Vec3;
 using fabvdb::powder::CavityPatches;
 using fabvdb::powder::OrientationFlow;
 using fabvdb::powder::PowderSamples;
-using fabvdb::powder::SurfaceRayCaster;
+using fabvdb::volume::SurfaceRayCaster;
 
 const double voxel = 0.5;
 // Walls off the sampling lattice, so no sample lies on one.

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "powder/cavity_patches.h"
-#include "powder/surface_ray_caster.h"
+#include "volume/surface_ray_caster.h"
 #include "powder/transfer_matrix.h"
 #include "support/hand_patches.h"
 #include "support/shapes.h"
@@ -22,7 +22,7 @@ using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::powder::CavityPatches;
 using fabvdb::powder::StochasticMatrix;
-using fabvdb::powder::SurfaceRayCaster;
+using fabvdb::volume::SurfaceRayCaster;
 using fabvdb::powder::transfer_matrix;
 using fabvdb::powder::TransferOptions;
 using fabvdb::test::kCeiling;

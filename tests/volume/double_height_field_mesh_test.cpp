@@ -1,22 +1,34 @@
 // The surface of a swept level set as an exact double height field: a ring
 // standing on its side swept along tilted directions, and the same ring with
 // a keep-out block carved from the middle of its columns (two inside runs per
-// column); a column barely inside is noise and makes no shell. Checked by
-// edge pairing, CGAL's self-intersection test and the test support's own ray
+// column); a column barely inside is noise and makes no shell; given the
+// input's triangles, a sphere and a tilted cube come back on their input
+// surface, the same when stored inside out. Checked by edge pairing, CGAL's
+// self-intersection test and distances, and the test support's own ray
 // casting, not by anything the mesher computed.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/error.h"
+#include "support/cgal_mesh.h"
 #include "support/plain_level_set.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 #include "volume/double_height_field_mesh.h"
 #include "volume/mesh_shells.h"
+#include "volume/surface_ray_caster.h"
 #include "volume/sweep.h"
 
 namespace {
+
+//! The mesh of a swept part whose kept runs hold `level_set`'s zero crossings.
+fabvdb::Mesh part_mesh(const openvdb::FloatGrid& swept, fabvdb::Progress& progress,
+                       const openvdb::FloatGrid* level_set) {
+    fabvdb::volume::InputSurface input;
+    input.level_set = level_set;
+    return fabvdb::volume::double_height_field_mesh(swept, progress, &input);
+}
 
 using fabvdb::Mesh;
 using fabvdb::Vec3;
@@ -31,6 +43,35 @@ void expect_exact_double_height_field(const Mesh& mesh, const Vec3& d) {
     EXPECT_GT(check.lines, 3000u);
     EXPECT_EQ(check.lines_over_two, 0u) << "max crossings " << check.max_crossings;
     EXPECT_EQ(check.odd_lines, 0u);
+}
+
+//! Largest distance from the input's vertices and triangle centroids to
+//! `mesh`, measured by CGAL's AABB tree.
+double input_to_mesh_distance(const Mesh& input, const Mesh& mesh) {
+    namespace cgal = fabvdb::test::cgal;
+    const std::vector<cgal::Triangle3> triangles = cgal::triangles_of(mesh);
+    cgal::Tree tree(triangles.begin(), triangles.end());
+    tree.accelerate_distance_queries();
+    std::vector<Vec3> samples = input.vertices;
+    for (const auto& t : input.triangles) {
+        const Vec3 &a = input.vertices[t[0]], &b = input.vertices[t[1]], &c = input.vertices[t[2]];
+        samples.push_back({(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3});
+    }
+    double largest = 0;
+    for (const Vec3& p : samples) largest = std::max(largest, std::sqrt(tree.squared_distance(cgal::point(p))));
+    return largest;
+}
+
+//! Share of `mesh`'s vertices within `tolerance` of `input`'s surface
+//! (CGAL's AABB tree).
+double share_on_input(const Mesh& mesh, const Mesh& input, double tolerance) {
+    namespace cgal = fabvdb::test::cgal;
+    const std::vector<cgal::Triangle3> triangles = cgal::triangles_of(input);
+    cgal::Tree tree(triangles.begin(), triangles.end());
+    tree.accelerate_distance_queries();
+    size_t on = 0;
+    for (const Vec3& p : mesh.vertices) on += tree.squared_distance(cgal::point(p)) <= tolerance * tolerance;
+    return double(on) / double(std::max<size_t>(mesh.vertices.size(), 1));
 }
 
 class DoubleHeightFieldMesh : public ::testing::TestWithParam<Vec3> {
@@ -91,7 +132,7 @@ TEST(DoubleHeightFieldMeshKeepOut, ColumnsWithTwoRunsKeepTheOneHoldingTheKeptSur
     openvdb::FloatGrid::ConstPtr keep_out = plain_level_set(slab, 0.4);
     auto swept =
         fabvdb::volume::sweep_double_height_field(*plain_level_set(box, 0.4), {0, 0, 1}, {keep_out}, {}, progress);
-    const Mesh mesh = fabvdb::volume::double_height_field_mesh(*swept, progress, plain_level_set(kept, 0.4).get());
+    const Mesh mesh = part_mesh(*swept, progress, plain_level_set(kept, 0.4).get());
     expect_exact_double_height_field(mesh, {0, 0, 1});
     fabvdb::test::LineCaster caster(mesh, {0.01, 0.02, 1});
     EXPECT_TRUE(caster.inside({0.1, 0.1, 4.5}));
@@ -100,6 +141,57 @@ TEST(DoubleHeightFieldMeshKeepOut, ColumnsWithTwoRunsKeepTheOneHoldingTheKeptSur
     EXPECT_FALSE(caster.inside({2.5, 2.5, 4.5}));
     EXPECT_TRUE(caster.inside({5, 5, 4.5}));
 }
+
+// The input supplies the geometry: a sphere and a tilted cube, each already
+// a double height field along d, meshed from their own level sets with the
+// input's triangles given: the mesh is still an exact double height field,
+// most of its vertices lie on the input, every input vertex and triangle
+// centroid lies near it, and the input stored inside out gives the same mesh.
+class DoubleHeightFieldMeshFromInput : public ::testing::TestWithParam<Vec3> {
+protected:
+    static void SetUpTestSuite() { openvdb::initialize(); }
+};
+
+TEST_P(DoubleHeightFieldMeshFromInput, InputLiesOnTheMesh) {
+    const Vec3 d = GetParam();
+    const double voxel = 0.5;
+    Mesh cube = fabvdb::test::make_box({-4, -4, -4}, {4, 4, 4});
+    const double c = std::cos(0.4), s = std::sin(0.4);
+    for (Vec3& p : cube.vertices) p = {c * p[0] - s * p[1] + 0.13, s * p[0] + c * p[1] - 0.07, p[2] + 0.21};
+    for (const Mesh& input : {fabvdb::test::make_sphere({0.1, -0.2, 0.3}, 6.0, 4), cube}) {
+        fabvdb::Progress progress;
+        const openvdb::FloatGrid::Ptr level_set = plain_level_set(input, voxel);
+        auto swept = fabvdb::volume::sweep_double_height_field(*level_set, d, {}, {}, progress);
+        const fabvdb::volume::SurfaceRayCaster rays(input);
+        fabvdb::volume::InputSurface surface;
+        surface.level_set = level_set.get();
+        surface.mesh = &input;
+        surface.rays = &rays;
+        const Mesh mesh = fabvdb::volume::double_height_field_mesh(*swept, progress, &surface);
+        expect_exact_double_height_field(mesh, d);
+        // The column ends are the input's own crossings: most vertices lie on
+        // it (the level set alone puts none of the sphere's there); the
+        // silhouette and the cube's corners in projection follow the contour
+        // between columns, within half a voxel on the sphere and a voxel and
+        // a quarter at the cube's corners.
+        EXPECT_GT(share_on_input(mesh, input, 1e-3 * voxel), 0.85);
+        EXPECT_LT(input_to_mesh_distance(input, mesh), (input.vertices.size() == 8 ? 1.25 : 0.5) * voxel);
+        // Stored inside out, the same input gives the same mesh.
+        Mesh inside_out = input;
+        for (auto& t : inside_out.triangles) std::swap(t[1], t[2]);
+        const fabvdb::volume::SurfaceRayCaster inside_out_rays(inside_out);
+        surface.mesh = &inside_out;
+        surface.rays = &inside_out_rays;
+        surface.orientation = -1;
+        const Mesh again = fabvdb::volume::double_height_field_mesh(*swept, progress, &surface);
+        ASSERT_EQ(again.vertices.size(), mesh.vertices.size());
+        for (size_t v = 0; v < mesh.vertices.size(); ++v)
+            for (int k = 0; k < 3; ++k) ASSERT_NEAR(again.vertices[v][k], mesh.vertices[v][k], 1e-5) << "vertex " << v;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Directions, DoubleHeightFieldMeshFromInput,
+                         ::testing::Values(Vec3{0, 0, 1}, Vec3{1, 0, 0.3}, Vec3{0.3, -0.2, 1}));
 
 TEST(DoubleHeightFieldMeshErrors, EmptyGridGivesNoMeshAndCancelIsHonoured) {
     openvdb::initialize();

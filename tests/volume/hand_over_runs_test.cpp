@@ -22,6 +22,14 @@
 
 namespace {
 
+//! The mesh of a swept part whose kept runs hold `level_set`'s zero crossings.
+fabvdb::Mesh part_mesh(const openvdb::FloatGrid& swept, fabvdb::Progress& progress,
+                       const openvdb::FloatGrid* level_set) {
+    fabvdb::volume::InputSurface input;
+    input.level_set = level_set;
+    return fabvdb::volume::double_height_field_mesh(swept, progress, &input);
+}
+
 using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::test::plain_level_set;
@@ -64,8 +72,8 @@ TEST_F(HandOverRuns, RunsAboveTheSlabGoToTheSlabAndReachTheTopFace) {
     const Vec3 over_slab{0.1, 0.2, 5}, beside_slab{5, 5.1, 5}, under_slab{0.1, 0.2, -3};
     {
         // Without the hand-over, nothing holds the top face over the slab.
-        const Mesh box = fabvdb::volume::double_height_field_mesh(*made[0], progress, input_.get());
-        const Mesh slab = fabvdb::volume::double_height_field_mesh(*made[1], progress, input_.get());
+        const Mesh box = part_mesh(*made[0], progress, input_.get());
+        const Mesh slab = part_mesh(*made[1], progress, input_.get());
         EXPECT_FALSE(fabvdb::test::LineCaster(box, {0.01, 0.02, 1}).inside(over_slab));
         EXPECT_FALSE(fabvdb::test::LineCaster(slab, {0.01, 0.02, 1}).inside(over_slab));
     }
@@ -79,8 +87,8 @@ TEST_F(HandOverRuns, RunsAboveTheSlabGoToTheSlabAndReachTheTopFace) {
     EXPECT_EQ(handed.received[0], 0.0);
 
     const Grids again = sweep_in_order(handed.parts, progress, *input_);
-    const Mesh box = fabvdb::volume::double_height_field_mesh(*again[0], progress, input_.get());
-    const Mesh slab = fabvdb::volume::double_height_field_mesh(*again[1], progress, input_.get());
+    const Mesh box = part_mesh(*again[0], progress, input_.get());
+    const Mesh slab = part_mesh(*again[1], progress, input_.get());
     const fabvdb::test::LineCaster box_lines(box, {0.01, 0.02, 1}), slab_lines(slab, {0.01, 0.02, 1});
     EXPECT_TRUE(slab_lines.inside(over_slab));
     EXPECT_FALSE(box_lines.inside(over_slab));
@@ -97,7 +105,7 @@ TEST_F(HandOverRuns, RunsAboveTheSlabGoToTheSlabAndReachTheTopFace) {
     // places from the columns' minima, a fraction of a voxel inside).
     const auto whole = fabvdb::volume::sweep_double_height_field(*input_, {0, 0, 1}, {}, {}, progress);
     const double expected = fabvdb::test::mesh_volume(
-        fabvdb::volume::double_height_field_mesh(*whole, progress, input_.get()));
+        part_mesh(*whole, progress, input_.get()));
     const double total = fabvdb::test::mesh_volume(box) + fabvdb::test::mesh_volume(slab);
     EXPECT_NEAR(total, expected, 0.01 * expected);
 }

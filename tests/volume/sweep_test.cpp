@@ -25,6 +25,14 @@
 
 namespace {
 
+//! The mesh of a swept part whose kept runs hold `level_set`'s zero crossings.
+fabvdb::Mesh part_mesh(const openvdb::FloatGrid& swept, fabvdb::Progress& progress,
+                       const openvdb::FloatGrid* level_set) {
+    fabvdb::volume::InputSurface input;
+    input.level_set = level_set;
+    return fabvdb::volume::double_height_field_mesh(swept, progress, &input);
+}
+
 using fabvdb::Mesh;
 using fabvdb::Vec3;
 using fabvdb::test::plain_level_set;
@@ -151,8 +159,8 @@ TEST(SweepTrim, SlotUnderTheTopIsHalfTrimmedHalfFilled) {
     fabvdb::volume::SweepOptions trimming;
     trimming.kept_surface = input.get();
     const auto trimmed_grid = fabvdb::volume::sweep_double_height_field(*input, d, {}, trimming, progress, &trimmed_stats);
-    const Mesh filled = fabvdb::volume::double_height_field_mesh(*filled_grid, progress, input.get());
-    const Mesh trimmed = fabvdb::volume::double_height_field_mesh(*trimmed_grid, progress, input.get());
+    const Mesh filled = part_mesh(*filled_grid, progress, input.get());
+    const Mesh trimmed = part_mesh(*trimmed_grid, progress, input.get());
     EXPECT_EQ(filled_stats.columns_trimmed, 0u);
     EXPECT_GT(trimmed_stats.columns_trimmed, 0u);
 
@@ -240,7 +248,7 @@ TEST(SweepTrim, GivenUpEdgesOfAThickRingAreFilledAgain) {
     trimming.kept_surface = input.get();
     fabvdb::volume::SweepStats stats;
     const auto grid = fabvdb::volume::sweep_double_height_field(*input, d, {}, trimming, progress, &stats);
-    const Mesh part = fabvdb::volume::double_height_field_mesh(*grid, progress, input.get());
+    const Mesh part = part_mesh(*grid, progress, input.get());
     EXPECT_GT(stats.columns_trimmed, 0u);
     ASSERT_TRUE(fabvdb::test::closed_two_manifold(part));
     const auto check = fabvdb::test::check_double_height_field(part, d, 80);

@@ -4,7 +4,10 @@
 // nested boxes; on an icosphere from inside, the distance the tests' own line
 // caster finds, on the plane of the triangle reported; a ray from a point of
 // a face does not hit it (only t > 0 counts); the same answers from threads;
-// a mesh without triangles is refused.
+// a mesh without triangles is refused. Every hit of a segment: the same
+// crossings as the tests' own line caster on an icosphere, ordered, none
+// outside the segment; a line through a face's diagonal edge or a box's
+// corner is not lost between the triangles that meet there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,7 +18,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
-#include "powder/surface_ray_caster.h"
+#include "volume/surface_ray_caster.h"
 #include "support/ray_cast.h"
 #include "support/shapes.h"
 
@@ -23,7 +26,7 @@ namespace {
 
 using fabvdb::Mesh;
 using fabvdb::Vec3;
-using fabvdb::powder::SurfaceRayCaster;
+using fabvdb::volume::SurfaceRayCaster;
 
 //! Whether every corner of triangle `t` has coordinate `axis` equal to `value`.
 bool on_plane(const Mesh& mesh, int64_t t, int axis, double value) {
@@ -141,9 +144,52 @@ TEST(SurfaceRayCaster, AgreesWithAnIndependentLineCasterOnASphere) {
     }
 }
 
+TEST(SurfaceRayCaster, AllHitsAreTheLineCastersCrossingsInsideTheSegment) {
+    const Vec3 center{1, 2, 3};
+    const Mesh sphere = fabvdb::test::make_sphere(center, 10.0, 3);
+    const SurfaceRayCaster caster(sphere);
+    std::mt19937 random(11);
+    std::normal_distribution<double> normal;
+    std::uniform_real_distribution<double> offset(-6, 6);
+    for (int i = 0; i < 200; ++i) {
+        Vec3 d{normal(random), normal(random), normal(random)};
+        const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (double& x : d) x /= length;
+        const Vec3 from{center[0] + offset(random), center[1] + offset(random), center[2] + offset(random)};
+        const double t_min = -15 + 5 * (i % 3), t_max = 25 - 7 * (i % 4);
+        const std::vector<fabvdb::volume::RayHit> hits = caster.all_hits(from, d, t_min, t_max);
+        std::vector<double> expected;
+        for (double t : fabvdb::test::LineCaster(sphere, d).crossings(from))
+            if (t > t_min && t < t_max) expected.push_back(t);
+        ASSERT_EQ(hits.size(), expected.size()) << "line " << i;
+        for (size_t k = 0; k < hits.size(); ++k) {
+            EXPECT_NEAR(hits[k].t, expected[k], 1e-4) << "line " << i << " hit " << k;
+            EXPECT_LT(hits[k].triangle, sphere.triangles.size());
+            if (k > 0) EXPECT_LE(hits[k - 1].t, hits[k].t);
+        }
+    }
+}
+
+TEST(SurfaceRayCaster, ALineThroughEdgesAndCornersIsNotLost) {
+    const Mesh box = fabvdb::test::make_box({0, 0, 0}, {4, 4, 4});
+    const SurfaceRayCaster caster(box);
+    // Along z through every point of a fine grid over the square, the
+    // diagonals and the corners included: the bottom and the top face.
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j) {
+            const std::vector<fabvdb::volume::RayHit> hits = caster.all_hits({0.5 * i, 0.5 * j, -1}, {0, 0, 1}, 0, 10);
+            bool bottom = false, top = false;
+            for (const auto& hit : hits) {
+                bottom |= std::abs(hit.t - 1) < 1e-6 && on_plane(box, hit.triangle, 2, 0);
+                top |= std::abs(hit.t - 5) < 1e-6 && on_plane(box, hit.triangle, 2, 4);
+            }
+            EXPECT_TRUE(bottom && top) << "line through (" << 0.5 * i << ", " << 0.5 * j << ")";
+        }
+}
+
 TEST(SurfaceRayCaster, AMeshWithoutTrianglesIsBadInput) {
     try {
-        fabvdb::powder::SurfaceRayCaster caster{fabvdb::Mesh{}};
+        fabvdb::volume::SurfaceRayCaster caster{fabvdb::Mesh{}};
         ADD_FAILURE() << "an empty mesh was accepted";
     } catch (const fabvdb::Error& e) {
         EXPECT_EQ(e.status(), FABVDB_ERR_BAD_INPUT);
