@@ -8,14 +8,11 @@
 #include <fstream>
 #include <map>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
 
 #include "core/atomic_output.h"
 #include "core/error.h"
 #include "surface/moldability_energy.h"
+#include "surface/nearest_outer_triangles.h"
 #include "core/vec3_ops.h"
 
 namespace fabvdb::surface {
@@ -121,24 +118,12 @@ void write_colour_ply(const std::string& path, const std::vector<Vec3>& vertices
 
 void write_parts_ply(const std::string& path, const Mesh& input, const Shell& shell,
                      const Decomposition& decomposition) {
-    using K = CGAL::Simple_cartesian<double>;
-    std::vector<K::Triangle_3> triangles;
-    triangles.reserve(shell.triangle_count());
-    const auto point = [](const Vec3& p) { return K::Point_3(p[0], p[1], p[2]); };
-    for (const Triangle& f : shell.outer.triangles)
-        triangles.emplace_back(point(shell.outer.vertices[f[0]]), point(shell.outer.vertices[f[1]]),
-                               point(shell.outer.vertices[f[2]]));
-    using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
-    CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(triangles.begin(), triangles.end());
-    tree.accelerate_distance_queries();
+    const std::vector<uint32_t> nearest = nearest_outer_triangles(input, shell.outer);
     const std::vector<char> upper = outer_upper(shell, decomposition);
     std::vector<std::array<uint8_t, 3>> colours(input.triangles.size());
     for (size_t t = 0; t < input.triangles.size(); ++t) {
-        const Triangle& f = input.triangles[t];
-        const Vec3 c = (1.0 / 3.0) * (input.vertices[f[0]] + input.vertices[f[1]] + input.vertices[f[2]]);
-        const size_t nearest = size_t(tree.closest_point_and_primitive(point(c)).second - triangles.cbegin());
-        auto colour = part_colour(size_t(decomposition.part_of_triangle[nearest]));
-        if (!upper[nearest])
+        auto colour = part_colour(size_t(decomposition.part_of_triangle[nearest[t]]));
+        if (!upper[nearest[t]])
             for (auto& channel : colour) channel = uint8_t(channel * 0.55);
         colours[t] = colour;
     }

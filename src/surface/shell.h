@@ -21,6 +21,12 @@ struct Shell {
     double thickness = 0;           //!< ω in millimetres
     bool solid = false;             //!< prisms reach the medial surface: parts are cast solid, with no core
     double unit_scale = 1;          //!< 1 / largest bbox extent: lengths × unit_scale = unit-cube lengths
+    //! The full-resolution input S_low was made from, and per input triangle
+    //! the S_low triangle nearest to it (nearest_outer_triangles.h): what
+    //! undercut depths are measured on (undercut_depth.h). Empty for a shell
+    //! made without an input: measured on S_low.
+    Mesh input;
+    std::vector<uint32_t> input_nearest;
 
     // Derived by make_shell.
     std::vector<Vec3> normal;                 //!< unit outward normal per outer triangle

@@ -1,9 +1,10 @@
-//! shell_from_mesh: volume::low_res_shell → make_shell → thin_segments.
+//! shell_from_mesh: volume::low_res_shell → make_shell → the input on it → thin_segments.
 #include "surface/shell_from_mesh.h"
 
 #include <algorithm>
 
 #include "core/stage_clock.h"
+#include "surface/nearest_outer_triangles.h"
 #include "surface/thin_features.h"
 
 namespace fabvdb::surface {
@@ -16,6 +17,9 @@ Shell shell_from_mesh(const Mesh& input, const volume::LowResShellOptions& optio
     Shell shell = make_shell(std::move(low.outer), std::move(low.inner), std::vector<int>(triangle_count, -1),
                              low.thickness, options.input_name);
     shell.solid = options.solid;
+    shell.input = input;
+    shell.input_nearest = nearest_outer_triangles(input, shell.outer);
+    clock.lap("input_on_shell");
     if (!options.solid) shell.thin_segment = thin_segments(shell.outer, shell.neighbor, low.depth, low.thickness);
     clock.lap("thin_features");
     if (stats) {

@@ -26,12 +26,23 @@ UndercutDepth undercut_depth(const Shell& shell, const std::vector<int>& part_of
     UndercutDepth result;
     const volume::AlignedFrame frame = volume::aligned_frame(direction);
     const Vec3 &d = frame.d, &e1 = frame.e1, &e2 = frame.e2;
-    const Mesh& mesh = shell.outer;
+    // On the input where the shell has it, each input triangle labelled as
+    // its nearest S_low triangle and facing as the input does as a whole.
+    const bool on_input = !shell.input.triangles.empty();
+    const Mesh& mesh = on_input ? shell.input : shell.outer;
     const size_t n = mesh.triangles.size();
+    const auto part_of = [&](size_t t) { return part_of_triangle[on_input ? shell.input_nearest[t] : t]; };
+    const double orientation = on_input && signed_volume(mesh) < 0 ? -1.0 : 1.0;
+    const auto facing_of = [&](size_t t) {
+        if (!on_input) return dot(shell.normal[t], d);
+        const Triangle& f = mesh.triangles[t];
+        const Vec3 normal = cross(mesh.vertices[f[1]] - mesh.vertices[f[0]], mesh.vertices[f[2]] - mesh.vertices[f[0]]);
+        return orientation * dot(normal, d);
+    };
 
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     for (size_t t = 0; t < n; ++t) {
-        if (part_of_triangle[t] != part) continue;
+        if (part_of(t) != part) continue;
         for (uint32_t v : mesh.triangles[t]) {
             const double uv[2] = {dot(mesh.vertices[v], e1), dot(mesh.vertices[v], e2)};
             for (int k = 0; k < 2; ++k) {
@@ -50,7 +61,7 @@ UndercutDepth undercut_depth(const Shell& shell, const std::vector<int>& part_of
     std::vector<std::vector<Crossing>> lines(size_t(cols) * size_t(rows));
 
     for (size_t t = 0; t < n; ++t) {
-        const double facing = dot(shell.normal[t], d);
+        const double facing = facing_of(t);
         if (facing == 0) continue;
         double u[3], v[3], h[3];
         for (int k = 0; k < 3; ++k) {
@@ -77,7 +88,7 @@ UndercutDepth undercut_depth(const Shell& shell, const std::vector<int>& part_of
                 const double b0 = 1 - b1 - b2;
                 if (b0 < 0 || b1 < 0 || b2 < 0) continue;
                 lines[size_t(r) * size_t(cols) + size_t(c)].push_back(
-                    {b0 * h[0] + b1 * h[1] + b2 * h[2], part_of_triangle[t] == part, facing > 0});
+                    {b0 * h[0] + b1 * h[1] + b2 * h[2], part_of(t) == part, facing > 0});
             }
         }
     }

@@ -11,10 +11,13 @@
 //! surface up to about half that depth from the cast part; the decomposition
 //! bounds it (coarse_decomposition.h). Lines are cast on a square grid of
 //! `spacing` across the part's projection (at most 512 × 512 lines: a wider
-//! part gets a coarser grid) through the outer triangles of S_low (the other
-//! parts keeping nothing out: an upper bound where they would); gaps narrower
-//! than the grid may be missed. Costs one pass over the triangles, a sort of
-//! each line's crossings and, per gap end, a look at the lines within its depth.
+//! part gets a coarser grid) through the full-resolution input the shell
+//! holds, each input triangle in the part of its nearest S_low triangle (the
+//! detail S_low smooths away is what the sweep buries), or through S_low's
+//! outer triangles for a shell without one (the other parts keeping nothing
+//! out: an upper bound where they would); gaps narrower than the grid may be
+//! missed. Costs one pass over the triangles, a sort of each line's crossings
+//! and, per gap end, a look at the lines within its depth.
 #pragma once
 
 #include <vector>

@@ -4,12 +4,15 @@
 //! the block's bottom), the same with the upper slab a 1 mm wide wall (the
 //! fill is a 1 mm wide strip: 0.5 mm from its middle to its sides), no gap
 //! across the slabs, none when the upper slab is another part or another
-//! part lies in the gap, and the reach capping the depth.
+//! part lies in the gap, and the reach capping the depth. Measured on the
+//! input the shell holds: a gap S_low smoothed away is still found, the same
+//! with the input stored inside out.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "shell_shapes.h"
+#include "surface/nearest_outer_triangles.h"
 #include "surface/undercut_depth.h"
 
 namespace {
@@ -74,4 +77,19 @@ TEST(UndercutDepth, AnotherPartAboveOrBetweenMakesNoGap) {
 TEST(UndercutDepth, ReachCapsTheDepth) {
     const Shell shell = slabs(make_box({0, 0, 5}, {10, 10, 7}));
     EXPECT_NEAR(undercut_depth(shell, parts(shell, 0, 0), 0, {0, 0, 1}, spacing, 1.0).depth, 1.0, 1e-9);
+}
+
+TEST(UndercutDepth, MeasuredOnTheInputWhereSLowSmoothedTheGapAway) {
+    // S_low a solid block; the input it was made from two slabs with a 3 mm gap.
+    Shell shell = fabvdb::test::shell_of(make_box({0, 0, 0}, {10, 10, 7}), 0.5);
+    const std::vector<int> one_part(shell.triangle_count(), 0);
+    EXPECT_EQ(undercut_depth(shell, one_part, 0, {0, 0, 1}, spacing, far).depth, 0.0);
+    for (bool inside_out : {false, true}) {
+        shell.input = merged(make_box({0, 0, 0}, {10, 10, 2}), make_box({0, 0, 5}, {10, 10, 7}));
+        if (inside_out)
+            for (auto& t : shell.input.triangles) std::swap(t[1], t[2]);
+        shell.input_nearest = fabvdb::surface::nearest_outer_triangles(shell.input, shell.outer);
+        EXPECT_NEAR(undercut_depth(shell, one_part, 0, {0, 0, 1}, spacing, far).depth, 2.0, 1e-9) << inside_out;
+        EXPECT_EQ(undercut_depth(shell, one_part, 0, {1, 0, 0}, spacing, far).depth, 0.0) << inside_out;
+    }
 }
