@@ -27,6 +27,7 @@ struct Column {
     float lo = 0, hi = 0;    //!< index z of the inside run's ends
     float minimum = 0;       //!< smallest value along the column
     float at_minimum = 0;    //!< index z where it is smallest
+    bool lo_on_input = false, hi_on_input = false;  //!< ends moved to the input's crossings
 };
 
 //! How far (index units, voxels) a run end on the input surface may be from
@@ -119,6 +120,139 @@ Column scan_column(const float* column, size_t nz, float z0, const SurfaceCrossi
     return c;
 }
 
+//! The input's vertices by grid cell (cell (i, j) spans block offsets
+//! [i, i + 1) × [j, j + 1)), each with its block offsets and index z.
+class CellVertices {
+public:
+    CellVertices() = default;
+    CellVertices(const Mesh& input, const openvdb::math::Transform& transform, const openvdb::Coord& origin, int nx,
+                 int ny)
+        : ny_(ny), start_(size_t(nx) * size_t(ny) + 1, 0) {
+        std::vector<std::pair<size_t, openvdb::Vec3d>> placed;
+        for (const Vec3& v : input.vertices) {
+            const openvdb::Vec3d p = transform.worldToIndex(openvdb::Vec3d(v[0], v[1], v[2])) - origin.asVec3d();
+            const double ci = std::floor(p[0]), cj = std::floor(p[1]);
+            if (ci < 0 || cj < 0 || ci >= nx - 1 || cj >= ny - 1) continue;
+            placed.push_back({size_t(ci) * size_t(ny) + size_t(cj), {p[0], p[1], p[2] + origin.z()}});
+        }
+        for (const auto& entry : placed) ++start_[entry.first + 1];
+        for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+        points_.resize(placed.size());
+        std::vector<size_t> next(start_.begin(), start_.end() - 1);
+        for (const auto& entry : placed) points_[next[entry.first]++] = entry.second;
+    }
+    //! The vertices in cell (i, j): [first, last).
+    std::pair<const openvdb::Vec3d*, const openvdb::Vec3d*> of(int i, int j) const {
+        if (start_.empty()) return {nullptr, nullptr};
+        const size_t c = size_t(i) * size_t(ny_) + size_t(j);
+        return {points_.data() + start_[c], points_.data() + start_[c + 1]};
+    }
+
+private:
+    int ny_ = 0;
+    std::vector<size_t> start_;
+    std::vector<openvdb::Vec3d> points_;
+};
+
+//! A corner of a cell's polygon: block offsets, its top and bottom index z,
+//! and their vertices (the same for a contour vertex).
+struct LiftedCorner {
+    double i, j, top, bottom;
+    uint32_t top_id, bottom_id;
+};
+
+struct SteinerPoint {
+    double i, j, top, bottom;
+};
+
+//! The interpolated top and bottom at (x, y) of the fan from corner `apex`
+//! of a convex polygon, when the point lies in it.
+std::optional<std::pair<double, double>> fan_heights(const std::vector<LiftedCorner>& polygon, size_t apex, double x,
+                                                     double y) {
+    const size_t n = polygon.size();
+    const LiftedCorner& a = polygon[apex];
+    for (size_t s = 1; s + 1 < n; ++s) {
+        const LiftedCorner &b = polygon[(apex + s) % n], &c = polygon[(apex + s + 1) % n];
+        const double area = (b.i - a.i) * (c.j - a.j) - (c.i - a.i) * (b.j - a.j);
+        if (area <= 0) continue;
+        const double wb = ((x - a.i) * (c.j - a.j) - (c.i - a.i) * (y - a.j)) / area;
+        const double wc = ((b.i - a.i) * (y - a.j) - (x - a.i) * (b.j - a.j)) / area;
+        const double wa = 1 - wb - wc;
+        if (wa < -1e-9 || wb < -1e-9 || wc < -1e-9) continue;
+        return std::make_pair(wa * a.top + wb * b.top + wc * c.top, wa * a.bottom + wb * b.bottom + wc * c.bottom);
+    }
+    return std::nullopt;
+}
+
+//! How far along d (voxels) an input vertex in a cell may lie from the
+//! sheet's fan and still be taken as a point of that sheet: a tip along d
+//! between columns ends up to about a voxel over the tan of its half-angle
+//! past them.
+constexpr double bend_reach = 4.0;
+
+//! Where the input bends between a cell's corners (a tip along d, a ridge,
+//! a steep slope near the silhouette), the part's sheet over the cell gets
+//! one more vertex: of the input's vertices inside the polygon (a twentieth
+//! of a voxel from its edges) on a sheet whose corners all lie on the input,
+//! the one farthest along d from the fan, when over a twentieth of a voxel
+//! and within bend_reach of it, and when a ray there confirms it is the
+//! input's crossing nearest to the fan on that sheet (not another layer of
+//! the input); the other sheet there is read by the same ray.
+std::optional<SteinerPoint> steiner_point(const std::vector<LiftedCorner>& polygon, size_t apex,
+                                          std::pair<const openvdb::Vec3d*, const openvdb::Vec3d*> candidates,
+                                          const InputLines& lines, bool top_on_input, bool bottom_on_input) {
+    if (!top_on_input && !bottom_on_input) return std::nullopt;
+    const size_t n = polygon.size();
+    const double margin = 0.05;
+    struct Candidate {
+        double x, y, z, top, bottom, error;
+        bool on_top;
+    };
+    std::vector<Candidate> found;
+    for (const openvdb::Vec3d* v = candidates.first; v != candidates.second; ++v) {
+        const double x = (*v)[0], y = (*v)[1], z = (*v)[2];
+        bool inside = true;
+        for (size_t s = 0; s < n && inside; ++s) {
+            const LiftedCorner &a = polygon[s], &b = polygon[(s + 1) % n];
+            const double length = std::hypot(b.i - a.i, b.j - a.j);
+            inside = length > 0 && ((b.i - a.i) * (y - a.j) - (x - a.i) * (b.j - a.j)) / length > margin;
+        }
+        if (!inside) continue;
+        const auto heights = fan_heights(polygon, apex, x, y);
+        if (!heights) continue;
+        const double to_top = std::abs(z - heights->first), to_bottom = std::abs(z - heights->second);
+        const bool on_top = to_top <= to_bottom;
+        const double error = on_top ? to_top : to_bottom;
+        if ((on_top ? !top_on_input : !bottom_on_input) || error > bend_reach || error <= 0.05) continue;
+        found.push_back({x, y, z, heights->first, heights->second, error, on_top});
+    }
+    std::sort(found.begin(), found.end(), [](const Candidate& a, const Candidate& b) { return a.error > b.error; });
+    for (const Candidate& c : found) {
+        // The ray through the vertex: the crossing nearest to the fan on its
+        // sheet must be the vertex itself.
+        const std::vector<Crossing> crossings = lines.crossings(c.x, c.y);
+        const auto nearest = [&](double from, int facing) {
+            double best = from, distance = bend_reach;
+            for (const Crossing& k : crossings)
+                if (k.facing == facing && std::abs(k.z - from) <= distance) best = k.z, distance = std::abs(k.z - from);
+            return best;
+        };
+        SteinerPoint point{c.x, c.y, c.top, c.bottom};
+        if (c.on_top) {
+            if (std::abs(nearest(c.top, 1) - c.z) > 1e-3) continue;
+            point.top = c.z;
+            if (bottom_on_input) point.bottom = nearest_crossing(crossings, c.bottom, -1);
+        } else {
+            if (std::abs(nearest(c.bottom, -1) - c.z) > 1e-3) continue;
+            point.bottom = c.z;
+            if (top_on_input) point.top = nearest_crossing(crossings, c.top, 1);
+        }
+        if (point.top - point.bottom < 1e-3) continue;
+        return point;
+    }
+    return std::nullopt;
+}
+
 //! Moves each inside column's ends that lie on the input surface (the
 //! input's level set within snap_reach voxels of zero there) to the input's
 //! nearest crossing facing the same way, when one is within snap_reach and
@@ -145,6 +279,8 @@ void snap_to_input(std::vector<Column>& columns, int ny, const openvdb::math::Tr
             const double lo = low_on_input ? nearest_crossing(crossings, column.lo, -1) : column.lo;
             const double hi = high_on_input ? nearest_crossing(crossings, column.hi, 1) : column.hi;
             if (hi - lo < 1e-3) continue;
+            column.lo_on_input = lo != column.lo;
+            column.hi_on_input = hi != column.hi;
             column.lo = float(lo);
             column.hi = float(hi);
         }
@@ -186,13 +322,17 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
     const auto column_at = [&](int i, int j) -> const Column& { return columns[size_t(i) * size_t(ny) + size_t(j)]; };
 
     Mesh mesh;
+    std::vector<openvdb::Vec3d> at_index;  //!< per vertex: block offsets i, j and index z
     const openvdb::math::Transform& transform = swept.transform();
     const auto add_vertex = [&](double i, double j, double z) {
         const openvdb::Vec3d p =
             transform.indexToWorld(openvdb::Vec3d(i + box.min().x(), j + box.min().y(), z));
         mesh.vertices.push_back({p[0], p[1], p[2]});
+        at_index.emplace_back(i, j, z);
         return uint32_t(mesh.vertices.size() - 1);
     };
+    const CellVertices cell_vertices =
+        lines ? CellVertices(*input->mesh, transform, box.min(), nx, ny) : CellVertices();
     const uint32_t none = UINT32_MAX;
     std::vector<uint32_t> top(columns.size(), none), bottom(columns.size(), none);
     const auto column_vertices = [&](int i, int j) {
@@ -270,6 +410,30 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
                     return column_vertices(c.i, c.j);
                 };
                 const size_t n = polygon.size();
+                if (lines && n >= 3) {
+                    std::vector<LiftedCorner> lifted;
+                    bool top_on_input = true, bottom_on_input = true;
+                    for (const Corner& corner : polygon) {
+                        const auto v = ids(corner);
+                        lifted.push_back({at_index[v[0]][0], at_index[v[0]][1], at_index[v[0]][2],
+                                          at_index[v[1]][2], v[0], v[1]});
+                        if (corner.contour != none) continue;
+                        top_on_input &= column_at(corner.i, corner.j).hi_on_input;
+                        bottom_on_input &= column_at(corner.i, corner.j).lo_on_input;
+                    }
+                    const std::optional<SteinerPoint> point =
+                        steiner_point(lifted, apex, cell_vertices.of(i, j), *lines, top_on_input, bottom_on_input);
+                    if (point) {
+                        const uint32_t p_top = add_vertex(point->i, point->j, point->top);
+                        const uint32_t p_bottom = add_vertex(point->i, point->j, point->bottom);
+                        for (size_t s = 0; s < n; ++s) {
+                            const LiftedCorner &b = lifted[s], &e = lifted[(s + 1) % n];
+                            mesh.triangles.push_back({p_top, b.top_id, e.top_id});
+                            mesh.triangles.push_back({p_bottom, e.bottom_id, b.bottom_id});
+                        }
+                        return;
+                    }
+                }
                 const auto a = ids(polygon[apex]);
                 for (size_t s = 1; s + 1 < n; ++s) {
                     const auto b = ids(polygon[(apex + s) % n]), c = ids(polygon[(apex + s + 1) % n]);

@@ -16,10 +16,16 @@
 //! the contour vertex is found by bisecting rays along the grid edge to 1/64
 //! of a voxel. Each polygon is fanned from an inside column and lifted twice,
 //! to the column tops (facing +d) and bottoms (facing −d), the two sheets
-//! sharing the contour vertices. The result is closed, 2-manifold, outward,
+//! sharing the contour vertices; where the input bends inside a cell (a tip
+//! along d, a ridge, a steep slope by the silhouette), the fan is made from
+//! the input vertex in the cell farthest along d from it instead (over a
+//! twentieth of a voxel, on a sheet whose corners all lie on the input), the
+//! other sheet there read by a ray. The polygons' edges stay as they were,
+//! so neighbouring cells still meet edge to edge. The result is closed, 2-manifold, outward,
 //! without faces parallel to d, without shells under an eighth of a voxel³ or
-//! flat (mesh_shells.h), and in world coordinates. Costs one ray per column
-//! and six per silhouette edge (Embree). Cancellable.
+//! flat (mesh_shells.h), and in world coordinates. Costs one ray per column,
+//! six per silhouette edge and one per refined cell (Embree), and a pass over
+//! the input's vertices. Cancellable.
 #pragma once
 
 #include <openvdb/openvdb.h>

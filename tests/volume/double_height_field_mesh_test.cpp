@@ -193,6 +193,45 @@ TEST_P(DoubleHeightFieldMeshFromInput, InputLiesOnTheMesh) {
 INSTANTIATE_TEST_SUITE_P(Directions, DoubleHeightFieldMeshFromInput,
                          ::testing::Values(Vec3{0, 0, 1}, Vec3{1, 0, 0.3}, Vec3{0.3, -0.2, 1}));
 
+//! A closed cone: base circle of `radius` at z = 0 around (cx, cy), apex at
+//! height `height`, `segments` around.
+Mesh make_cone(double cx, double cy, double radius, double height, int segments) {
+    Mesh cone;
+    cone.vertices.push_back({cx, cy, height});
+    cone.vertices.push_back({cx, cy, 0});
+    for (int s = 0; s < segments; ++s) {
+        const double u = 2 * M_PI * s / segments;
+        cone.vertices.push_back({cx + radius * std::cos(u), cy + radius * std::sin(u), 0});
+    }
+    for (int s = 0; s < segments; ++s) {
+        const uint32_t a = uint32_t(2 + s), b = uint32_t(2 + (s + 1) % segments);
+        cone.triangles.push_back({0, a, b});
+        cone.triangles.push_back({1, b, a});
+    }
+    return cone;
+}
+
+TEST(DoubleHeightFieldMeshFromInput, ATipAlongDBetweenColumnsIsKept) {
+    // Half-angle about 22°, the apex 0.37 and 0.21 of a voxel off the columns:
+    // the columns around it end a voxel short of it; the mesh reaches it.
+    openvdb::initialize();
+    const double voxel = 0.5;
+    const Mesh cone = make_cone(0.37 * voxel, 0.21 * voxel, 4.0, 10.0, 96);
+    fabvdb::Progress progress;
+    const openvdb::FloatGrid::Ptr level_set = plain_level_set(cone, voxel);
+    auto swept = fabvdb::volume::sweep_double_height_field(*level_set, {0, 0, 1}, {}, {}, progress);
+    const fabvdb::volume::SurfaceRayCaster rays(cone);
+    fabvdb::volume::InputSurface surface;
+    surface.level_set = level_set.get();
+    surface.mesh = &cone;
+    surface.rays = &rays;
+    const Mesh mesh = fabvdb::volume::double_height_field_mesh(*swept, progress, &surface);
+    expect_exact_double_height_field(mesh, {0, 0, 1});
+    Mesh apex;
+    apex.vertices = {cone.vertices[0]};
+    EXPECT_LT(input_to_mesh_distance(apex, mesh), 0.05 * voxel);
+}
+
 TEST(DoubleHeightFieldMeshErrors, EmptyGridGivesNoMeshAndCancelIsHonoured) {
     openvdb::initialize();
     fabvdb::Progress progress;
