@@ -121,19 +121,38 @@ Column scan_column(const float* column, size_t nz, float z0, const SurfaceCrossi
 }
 
 //! The input's vertices by grid cell (cell (i, j) spans block offsets
-//! [i, i + 1) × [j, j + 1)), each with its block offsets and index z.
+//! [i, i + 1) × [j, j + 1)), each with its block offsets and index z, and
+//! whether it lies on the input's silhouette along the column axis (its
+//! triangles face both ways along it).
+struct CellPoint {
+    openvdb::Vec3d at;
+    bool silhouette;
+};
+
 class CellVertices {
 public:
     CellVertices() = default;
-    CellVertices(const Mesh& input, const openvdb::math::Transform& transform, const openvdb::Coord& origin, int nx,
-                 int ny)
+    CellVertices(const Mesh& input, double orientation, const openvdb::math::Transform& transform,
+                 const openvdb::Coord& origin, int nx, int ny)
         : ny_(ny), start_(size_t(nx) * size_t(ny) + 1, 0) {
-        std::vector<std::pair<size_t, openvdb::Vec3d>> placed;
-        for (const Vec3& v : input.vertices) {
-            const openvdb::Vec3d p = transform.worldToIndex(openvdb::Vec3d(v[0], v[1], v[2])) - origin.asVec3d();
+        const openvdb::Vec3d a = transform.indexToWorld(openvdb::Vec3d(0, 0, 0));
+        const openvdb::Vec3d b = transform.indexToWorld(openvdb::Vec3d(0, 0, 1));
+        const Vec3 axis{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        std::vector<uint8_t> faces(input.vertices.size(), 0);  // bit 0: one faces +d, bit 1: one faces −d
+        for (const Triangle& t : input.triangles) {
+            const Vec3 n = cross(input.vertices[t[1]] - input.vertices[t[0]], input.vertices[t[2]] - input.vertices[t[0]]);
+            const double along = orientation * dot(n, axis);
+            const uint8_t bit = along > 0 ? 1 : along < 0 ? 2 : 0;
+            for (uint32_t v : t) faces[v] |= bit;
+        }
+        std::vector<std::pair<size_t, CellPoint>> placed;
+        for (size_t v = 0; v < input.vertices.size(); ++v) {
+            const Vec3& w = input.vertices[v];
+            const openvdb::Vec3d p = transform.worldToIndex(openvdb::Vec3d(w[0], w[1], w[2])) - origin.asVec3d();
             const double ci = std::floor(p[0]), cj = std::floor(p[1]);
             if (ci < 0 || cj < 0 || ci >= nx - 1 || cj >= ny - 1) continue;
-            placed.push_back({size_t(ci) * size_t(ny) + size_t(cj), {p[0], p[1], p[2] + origin.z()}});
+            placed.push_back({size_t(ci) * size_t(ny) + size_t(cj),
+                              {{p[0], p[1], p[2] + origin.z()}, faces[v] == 3}});
         }
         for (const auto& entry : placed) ++start_[entry.first + 1];
         for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
@@ -142,7 +161,7 @@ public:
         for (const auto& entry : placed) points_[next[entry.first]++] = entry.second;
     }
     //! The vertices in cell (i, j): [first, last).
-    std::pair<const openvdb::Vec3d*, const openvdb::Vec3d*> of(int i, int j) const {
+    std::pair<const CellPoint*, const CellPoint*> of(int i, int j) const {
         if (start_.empty()) return {nullptr, nullptr};
         const size_t c = size_t(i) * size_t(ny_) + size_t(j);
         return {points_.data() + start_[c], points_.data() + start_[c + 1]};
@@ -151,7 +170,7 @@ public:
 private:
     int ny_ = 0;
     std::vector<size_t> start_;
-    std::vector<openvdb::Vec3d> points_;
+    std::vector<CellPoint> points_;
 };
 
 //! A corner of a cell's polygon: block offsets, its top and bottom index z,
@@ -199,7 +218,7 @@ constexpr double bend_reach = 4.0;
 //! input's crossing nearest to the fan on that sheet (not another layer of
 //! the input); the other sheet there is read by the same ray.
 std::optional<SteinerPoint> steiner_point(const std::vector<LiftedCorner>& polygon, size_t apex,
-                                          std::pair<const openvdb::Vec3d*, const openvdb::Vec3d*> candidates,
+                                          std::pair<const CellPoint*, const CellPoint*> candidates,
                                           const InputLines& lines, bool top_on_input, bool bottom_on_input) {
     if (!top_on_input && !bottom_on_input) return std::nullopt;
     const size_t n = polygon.size();
@@ -209,8 +228,8 @@ std::optional<SteinerPoint> steiner_point(const std::vector<LiftedCorner>& polyg
         bool on_top;
     };
     std::vector<Candidate> found;
-    for (const openvdb::Vec3d* v = candidates.first; v != candidates.second; ++v) {
-        const double x = (*v)[0], y = (*v)[1], z = (*v)[2];
+    for (const CellPoint* v = candidates.first; v != candidates.second; ++v) {
+        const double x = v->at[0], y = v->at[1], z = v->at[2];
         bool inside = true;
         for (size_t s = 0; s < n && inside; ++s) {
             const LiftedCorner &a = polygon[s], &b = polygon[(s + 1) % n];
@@ -332,7 +351,7 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
         return uint32_t(mesh.vertices.size() - 1);
     };
     const CellVertices cell_vertices =
-        lines ? CellVertices(*input->mesh, transform, box.min(), nx, ny) : CellVertices();
+        lines ? CellVertices(*input->mesh, input->orientation, transform, box.min(), nx, ny) : CellVertices();
     const uint32_t none = UINT32_MAX;
     std::vector<uint32_t> top(columns.size(), none), bottom(columns.size(), none);
     const auto column_vertices = [&](int i, int j) {
@@ -441,6 +460,45 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
                     mesh.triangles.push_back({a[1], c[1], b[1]});
                 }
             };
+            // The polygon's contour edge (two contour vertices in a row) cuts
+            // off a corner of the input's silhouette that lies in the cell:
+            // the silhouette vertex of the input farthest past it (within
+            // the cell, at a height within the polygon's run) goes in
+            // between them. The polygon stays convex (the vertex is inside
+            // the cell, past the edge) and its cell edges stay as they were.
+            const auto insert_silhouette_vertex = [&](std::vector<Corner>& polygon, size_t& apex, int ci0, int cj0) {
+                const size_t n = polygon.size();
+                size_t edge = n;
+                for (size_t s = 0; s < n; ++s)
+                    if (polygon[s].contour != none && polygon[(s + 1) % n].contour != none) edge = s;
+                if (edge == n) return;
+                const openvdb::Vec3d &a = at_index[polygon[edge].contour],
+                                     &b = at_index[polygon[(edge + 1) % n].contour];
+                double low = std::min(a[2], b[2]), high = std::max(a[2], b[2]);
+                for (const Corner& corner : polygon)
+                    if (corner.contour == none) {
+                        low = std::min(low, double(column_at(corner.i, corner.j).lo));
+                        high = std::max(high, double(column_at(corner.i, corner.j).hi));
+                    }
+                const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+                if (!(length > 0)) return;
+                const double margin = 0.05;
+                const CellPoint* best = nullptr;
+                double farthest = margin;
+                const auto points = cell_vertices.of(ci0, cj0);
+                for (const CellPoint* p = points.first; p != points.second; ++p) {
+                    if (!p->silhouette) continue;
+                    const double x = p->at[0], y = p->at[1], z = p->at[2];
+                    if (x - ci0 < margin || ci0 + 1 - x < margin || y - cj0 < margin || cj0 + 1 - y < margin) continue;
+                    if (z < low - snap_reach || z > high + snap_reach) continue;
+                    const double past = ((x - a[0]) * (b[1] - a[1]) - (b[0] - a[0]) * (y - a[1])) / length;
+                    if (past > farthest) farthest = past, best = p;
+                }
+                if (!best) return;
+                const uint32_t id = add_vertex(best->at[0], best->at[1], best->at[2]);
+                polygon.insert(polygon.begin() + std::ptrdiff_t(edge + 1), Corner{0, 0, id});
+                if (apex > edge) ++apex;
+            };
             const bool saddle = inside_count == 2 && in[0] == in[2];
             if (saddle) {
                 for (int k = 0; k < 4; ++k)
@@ -463,6 +521,7 @@ Mesh double_height_field_mesh(const openvdb::FloatGrid& swept, Progress& progres
                 }
                 if (in[k] != in[(k + 1) % 4]) polygon.push_back({0, 0, edge_vertex(k)});
             }
+            if (lines) insert_silhouette_vertex(polygon, apex, i, j);
             emit(polygon, apex);
         }
     }

@@ -20,8 +20,11 @@
 //! along d, a ridge, a steep slope by the silhouette), the fan is made from
 //! the input vertex in the cell farthest along d from it instead (over a
 //! twentieth of a voxel, on a sheet whose corners all lie on the input), the
-//! other sheet there read by a ray. The polygons' edges stay as they were,
-//! so neighbouring cells still meet edge to edge. The result is closed, 2-manifold, outward,
+//! other sheet there read by a ray; where a contour edge cuts off a corner of
+//! the input's silhouette along d inside the cell, the silhouette vertex
+//! farthest past it goes in between the edge's ends. The polygons' edges on
+//! cell borders stay as they were, so neighbouring cells still meet edge to
+//! edge. The result is closed, 2-manifold, outward,
 //! without faces parallel to d, without shells under an eighth of a voxel³ or
 //! flat (mesh_shells.h), and in world coordinates. Costs one ray per column,
 //! six per silhouette edge and one per refined cell (Embree), and a pass over
