@@ -22,7 +22,6 @@ import subprocess
 import sys
 import time
 
-FIT_MM = 60.0
 WALL_MM = 2.0
 COMMANDS = ["info", "repair", "hollow", "drain", "powder-sim", "decompose", "mold"]
 MOLD_SHARE = {"cad": 12, "sculpture": 10, "scan": 6, "dirty": 7, "large": 3, "degenerate": 2}
@@ -198,8 +197,8 @@ def fidelity(runner, src, diagonal, outputs, voxel, extra=()):
     mean = max(FIDELITY_MEAN_RATIO * diagonal, FIDELITY_MEAN_VOXELS * (voxel or 0))
     # Slits narrower than two of the command's voxels may close, as its own
     # fidelity gate allows (docs/reports.md#fidelity).
-    cover = runner.check(["cover", src, "--fit", str(FIT_MM), "--far", repr(far), "--gap", repr(2 * (voxel or 0))] +
-                         list(extra) + list(outputs))
+    cover = runner.check(["cover", src, "--fit", str(runner.args.fit_mm), "--far", repr(far),
+                          "--gap", repr(2 * (voxel or 0))] + list(extra) + list(outputs))
     if "error" in cover:
         return cover, "fidelity not measured: " + cover["error"], "fidelity not measured"
     fig = "input to output: %s%% farther than %s mm, max %s%% / mean %s%% of the diagonal" % (
@@ -225,10 +224,10 @@ def process_model(row, args, runner, with_mold):
             raise RuntimeError("%s: could not turn it inside out: %s" % (name, flipped["error"]))
     wanted = set(args.commands)
     fabvdb = os.path.abspath(args.fabvdb)
-    fit = ["--fit", "%gmm" % FIT_MM]
+    fit = ["--fit", "%gmm" % args.fit_mm]
     record = {"model": name, "category": row["category"], "triangles": row["triangles"],
               "closed": row["closed"], "inside_out": args.inside_out, "runs": {}}
-    facts = runner.check(["input", src, "--fit", str(FIT_MM)])
+    facts = runner.check(["input", src, "--fit", str(args.fit_mm)])
     record["input_check"] = facts
     closed_input = row["closed"] == "yes"
 
@@ -271,7 +270,7 @@ def process_model(row, args, runner, with_mold):
     if r is None:
         pass
     elif r["exit"] == 0:
-        chk = runner.check(["solid", out, "--reference", src, "--fit", str(FIT_MM)])
+        chk = runner.check(["solid", out, "--reference", src, "--fit", str(args.fit_mm)])
         bad = solid_verdict(chk, "output")
         if bad:
             cell("repair", bad[0], bad[1], r, check=chk)
@@ -307,7 +306,7 @@ def process_model(row, args, runner, with_mold):
     if r is None:
         pass
     elif r["exit"] == 0:
-        chk = runner.check(["solid", out, "--reference", src, "--fit", str(FIT_MM), "--cavity-wall"])
+        chk = runner.check(["solid", out, "--reference", src, "--fit", str(args.fit_mm), "--cavity-wall"])
         bad = solid_verdict(chk, "output")
         if bad:
             cell("hollow", bad[0], bad[1], r, check=chk)
@@ -461,7 +460,7 @@ def process_model(row, args, runner, with_mold):
             bad = solid_verdict(pchk, part[key])
             if bad:
                 problems.append(bad[1])
-    cover = runner.check(["cover", src, "--fit", str(FIT_MM)] + part_files)
+    cover = runner.check(["cover", src, "--fit", str(args.fit_mm)] + part_files)
     if "error" in cover:
         problems.append("faithfulness not measured: " + cover["error"])
         fig = "%d parts" % len(parts)
@@ -495,7 +494,7 @@ def write_tables(args, rows, selected):
             if cellv["result"] == "FAIL":
                 failures.append((rec["model"], c, cellv))
     doc = {"generated": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
-           "recipe": {"fit_mm": FIT_MM, "wall_mm": WALL_MM, "holes": "auto", "time_cap_s": args.time_cap,
+           "recipe": {"fit_mm": args.fit_mm, "wall_mm": WALL_MM, "holes": "auto", "time_cap_s": args.time_cap,
                       "mem_cap": args.mem_cap, "subset": args.subset, "molds": not args.no_molds,
                       "inside_out": args.inside_out, "commands": args.commands,
                       "fidelity": {"far_ratio": FIDELITY_FAR_RATIO, "mean_ratio": FIDELITY_MEAN_RATIO,
@@ -507,7 +506,7 @@ def write_tables(args, rows, selected):
     lines = ["# fabvdb corpus run", "",
              "Generated %s by `python3 bench/corpus/run.py %s`. Recipe: `--fit %gmm`, wall %g mm, holes auto; caps "
              "%d s and %s per run. Cells: result · key figure · seconds · peak MiB." %
-             (doc["generated"], args.argv_text, FIT_MM, WALL_MM, args.time_cap, args.mem_cap), "",
+             (doc["generated"], args.argv_text, args.fit_mm, WALL_MM, args.time_cap, args.mem_cap), "",
              "| command | ok | refused | FAIL | n/a |", "|---|---:|---:|---:|---:|"]
     for c in COMMANDS:
         s = summary[c]
@@ -568,6 +567,8 @@ def main():
     p.add_argument("--jobs", type=int, default=2, help="models run at once")
     p.add_argument("--time-cap", type=int, default=120, help="seconds per command run")
     p.add_argument("--mem-cap", default="8G", help="address-space cap per command run")
+    p.add_argument("--fit", dest="fit_mm", type=float, default=60.0,
+                   help="millimetres the longest side of each model is scaled to (--fit of every command)")
     p.add_argument("--check-cap", type=int, default=600, help="seconds per checker run")
     p.add_argument("--tables-only", action="store_true",
                    help="run nothing: write the tables from the records already in OUT/runs")
