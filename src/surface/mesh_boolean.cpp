@@ -10,6 +10,8 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <array>
+
 #include "core/error.h"
 
 namespace fabvdb::surface {
@@ -20,25 +22,42 @@ using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using Solid = CGAL::Surface_mesh<Kernel::Point_3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+// The mesh checked with exact predicates on its double coordinates (Epick:
+// the checks construct nothing, so they need no exact constructions), then
+// copied to exact points for the corefinement.
 Solid validated_solid(const Mesh& mesh, const std::string& name) {
+    using Checked = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
     validate_mesh(mesh, name);
-    std::vector<Kernel::Point_3> points;
+    if (mesh.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, name + " has no triangles");
+    std::vector<CGAL::Epick::Point_3> points;
     points.reserve(mesh.vertices.size());
     for (const Vec3& p : mesh.vertices) points.emplace_back(p[0], p[1], p[2]);
     std::vector<std::vector<std::size_t>> polygons;
     polygons.reserve(mesh.triangles.size());
     for (const Triangle& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
-    if (mesh.triangles.empty()) throw Error(FABVDB_ERR_BAD_INPUT, name + " has no triangles");
     if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
         throw Error(FABVDB_ERR_BAD_INPUT, name + " is not a 2-manifold, consistently oriented surface");
-    Solid solid;
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, solid);
-    if (!CGAL::is_closed(solid)) throw Error(FABVDB_ERR_BAD_INPUT, name + " is not closed (it has boundary edges)");
-    if (PMP::does_self_intersect(solid)) throw Error(FABVDB_ERR_BAD_INPUT, name + " intersects itself");
-    if (!PMP::is_outward_oriented(solid))
+    Checked checked;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, checked);
+    if (!CGAL::is_closed(checked)) throw Error(FABVDB_ERR_BAD_INPUT, name + " is not closed (it has boundary edges)");
+    if (PMP::does_self_intersect(checked)) throw Error(FABVDB_ERR_BAD_INPUT, name + " intersects itself");
+    if (!PMP::is_outward_oriented(checked))
         throw Error(FABVDB_ERR_BAD_INPUT, name + " is inside out (its triangles face inward)");
-    if (!PMP::does_bound_a_volume(solid))
+    if (!PMP::does_bound_a_volume(checked))
         throw Error(FABVDB_ERR_BAD_INPUT, name + " does not bound a volume (inverted or nested shells)");
+    Solid solid;
+    solid.reserve(checked.number_of_vertices(), checked.number_of_edges(), checked.number_of_faces());
+    std::vector<Solid::Vertex_index> exact(checked.number_of_vertices());
+    for (Checked::Vertex_index v : checked.vertices()) {
+        const auto& p = checked.point(v);
+        exact[v] = solid.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z()));
+    }
+    for (Checked::Face_index f : checked.faces()) {
+        std::array<Solid::Vertex_index, 3> corners;
+        int k = 0;
+        for (Checked::Vertex_index v : CGAL::vertices_around_face(checked.halfedge(f), checked)) corners[k++] = exact[v];
+        solid.add_face(corners[0], corners[1], corners[2]);
+    }
     return solid;
 }
 
@@ -92,8 +111,7 @@ const char* verb(BooleanOperation operation) {
 }  // namespace
 
 Mesh mesh_boolean(const Mesh& first, const std::string& first_name, const std::vector<BooleanStep>& steps,
-                  Progress& progress) {
-    progress.stage("mesh booleans");
+                  const Progress& progress) {
     Solid result = validated_solid(first, first_name);
     for (size_t i = 0; i < steps.size(); ++i) {
         const BooleanStep& step = steps[i];
@@ -114,7 +132,6 @@ Mesh mesh_boolean(const Mesh& first, const std::string& first_name, const std::v
                                                   " would not give a 2-manifold solid (the solids touch along "
                                                   "an edge or at a point)");
         result = std::move(out);
-        progress.update(double(i + 1) / double(steps.size()));
     }
     return to_mesh(result);
 }

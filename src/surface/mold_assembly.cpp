@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/parallel_invoke.h>
+
 #include "core/error.h"
 #include "surface/clear_grid_origin.h"
 #include "surface/face_sweep.h"
@@ -172,22 +174,28 @@ MoldPair assemble_in_frame(const Mesh& local, const std::vector<std::vector<Vec3
     const Mesh swept_down = sweep_faces_to_plane(local, false, block_lo[2] - 2 * margin);
     progress.check();
 
-    progress.stage("mold: bottom piece");
-    Mesh bottom = mesh_boolean(block_below, "the block below the parting surface",
-                               {{BooleanOperation::unite, &swept_down, "the part swept down"},
-                                {BooleanOperation::unite, &features.pins, "the key pins"},
-                                {BooleanOperation::subtract, &swept_up, "the part swept up"},
+    // The two pieces are independent: made at once, one per core.
+    progress.stage("mold: pieces");
+    Mesh bottom, top;
+    tbb::parallel_invoke(
+        [&] {
+            bottom = mesh_boolean(block_below, "the block below the parting surface",
+                                  {{BooleanOperation::unite, &swept_down, "the part swept down"},
+                                   {BooleanOperation::unite, &features.pins, "the key pins"},
+                                   {BooleanOperation::subtract, &swept_up, "the part swept up"},
+                                   {BooleanOperation::subtract, &channels, "the runner, sprue and vents"},
+                                   {BooleanOperation::intersect, &slab, "the block's slab"}},
+                                  progress);
+        },
+        [&] {
+            top = mesh_boolean(block_above, "the block above the parting surface",
+                               {{BooleanOperation::unite, &swept_up, "the part swept up"},
+                                {BooleanOperation::subtract, &swept_down, "the part swept down"},
                                 {BooleanOperation::subtract, &channels, "the runner, sprue and vents"},
+                                {BooleanOperation::subtract, &features.holes, "the key holes"},
                                 {BooleanOperation::intersect, &slab, "the block's slab"}},
                                progress);
-    progress.stage("mold: top piece");
-    Mesh top = mesh_boolean(block_above, "the block above the parting surface",
-                            {{BooleanOperation::unite, &swept_up, "the part swept up"},
-                             {BooleanOperation::subtract, &swept_down, "the part swept down"},
-                             {BooleanOperation::subtract, &channels, "the runner, sprue and vents"},
-                             {BooleanOperation::subtract, &features.holes, "the key holes"},
-                             {BooleanOperation::intersect, &slab, "the block's slab"}},
-                            progress);
+        });
 
     MoldPair pair;
     pair.top = std::move(top);

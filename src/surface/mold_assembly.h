@@ -11,7 +11,7 @@
 //! block top (the part and everything above it), SV↓ swept down, channels the
 //! runner, sprue and vents (mold_features.h), slab the block's height range
 //! (B∓ and SV reach past it, so no two solids share a plane). CGAL exact
-//! booleans. The part
+//! booleans, the two pieces made at once on two threads. The part
 //! must be a double height field along d (sweep.h makes it one). The pieces
 //! come back in world coordinates, closed and 2-manifold, with float
 //! coordinates that cross nowhere (float_rounding.h: what an STL file stores
