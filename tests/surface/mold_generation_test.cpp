@@ -2,7 +2,8 @@
 // two parts: every cast part and mold piece checked by the test support's own
 // ray casting, edge pairing and CGAL predicates (support/mold_checks.h), the
 // parts disjoint and reproducing the input (distances measured here by brute
-// force), a fin thinner than a voxel cast all the same, and bad
+// force), meeting at their seam, a fin thinner than a voxel cast all the
+// same, a slit narrower than a voxel closed within the fidelity asked, and bad
 // decompositions refused with a message naming the defect, while one of
 // the same model scanned open is taken.
 #include <gtest/gtest.h>
@@ -20,6 +21,7 @@
 #include "surface/decompose.h"
 #include "surface/decomposition_io.h"
 #include "surface/decomposition_parts.h"
+#include "surface/mesh_boolean.h"
 #include "surface/mold_generation.h"
 
 namespace {
@@ -133,16 +135,17 @@ TEST_F(MoldGeneration, PartsAreDisjointAndReproduceTheInput) {
     EXPECT_NEAR(molds_->mean_distance, mean, 0.01 * diagonal);
 }
 
-TEST(MoldGenerationThinFin, AFinThinnerThanAVoxelIsCast) {
-    // A fin 0.3 mm thick standing 3 mm off the sphere along (1, 1, 0), within
-    // the sphere's bounding box, where no voxel centre is inside it (x − y
-    // is 1 mm off a multiple of the voxel): the level sets have none of it,
-    // yet its outer edge must lie within two voxels of the cast parts.
-    openvdb::initialize();
-    Mesh fin = fabvdb::test::make_box({16, -0.15, -3}, {23, 0.15, 3});
-    const double h = std::sqrt(0.5);
-    for (Vec3& p : fin.vertices) p = {1 + h * (p[0] + p[1]), 2 + h * (p[0] - p[1]), 3 + p[2]};
-    const Mesh input = fabvdb::test::merged(fabvdb::test::make_sphere({1, 2, 3}, 20.0, 4), fin);
+// The distance from p to the nearest triangle of any of `parts`.
+double distance_to_parts(const Vec3& p, const std::vector<const Mesh*>& parts) {
+    double nearest = 1e300;
+    for (const Mesh* part : parts)
+        for (const auto& t : part->triangles)
+            nearest = std::min(nearest, point_triangle_distance(p, part->vertices[t[0]], part->vertices[t[1]],
+                                                                part->vertices[t[2]]));
+    return nearest;
+}
+
+fabvdb::surface::MoldGeneration two_part_molds(const Mesh& input) {
     fabvdb::Progress progress;
     fabvdb::surface::DecomposeSettings settings;
     settings.shell.target_triangles = 1500;
@@ -151,22 +154,103 @@ TEST(MoldGenerationThinFin, AFinThinnerThanAVoxelIsCast) {
     const auto result = fabvdb::surface::decompose_mesh(input, settings, {}, progress);
     const auto document = fabvdb::surface::decomposition_document(result.shell, result.terms, result.decomposition,
                                                                   settings.decomposition);
-    const auto model = fabvdb::surface::decomposed_parts(document, "fin.json", input);
+    const auto model = fabvdb::surface::decomposed_parts(document, "input.json", input);
     fabvdb::surface::MoldGenerationOptions options;
     options.voxel_size = voxel;
     options.mold.margin = 6.0;
     options.mold.grid_step = 1.5;
-    const auto molds = fabvdb::surface::generate_molds(input, model, options, progress);
+    return fabvdb::surface::generate_molds(input, model, options, progress);
+}
+
+TEST(MoldGenerationThinFin, AFinThinnerThanAVoxelIsCast) {
+    // A fin 0.3 mm thick standing 3 mm off the sphere along (1, 1, 0), within
+    // the sphere's bounding box, where no voxel centre is inside it (x − y
+    // is 1 mm off a multiple of the voxel): the level sets have none of it,
+    // yet it must be cast.
+    openvdb::initialize();
+    Mesh fin = fabvdb::test::make_box({16, -0.15, -3}, {23, 0.15, 3});
+    const double h = std::sqrt(0.5);
+    for (Vec3& p : fin.vertices) p = {1 + h * (p[0] + p[1]), 2 + h * (p[0] - p[1]), 3 + p[2]};
+    const Mesh input = fabvdb::test::merged(fabvdb::test::make_sphere({1, 2, 3}, 20.0, 4), fin);
+    const auto molds = two_part_molds(input);
     EXPECT_GT(molds.lost_triangles, 0u);
-    for (const Vec3& p : fin.vertices) {
-        if (std::hypot(p[0] - 1, p[1] - 2) < 22) continue;
-        double nearest = 1e300;
-        for (const auto& cast : molds.parts)
-            for (const auto& t : cast.part.triangles)
-                nearest = std::min(nearest, point_triangle_distance(p, cast.part.vertices[t[0]],
-                                                                    cast.part.vertices[t[1]], cast.part.vertices[t[2]]));
-        EXPECT_LT(nearest, 2 * voxel) << p[0] << " " << p[1] << " " << p[2];
+    std::vector<const Mesh*> parts;
+    for (const auto& cast : molds.parts) parts.push_back(&cast.part);
+    // Its corners past the sphere are read back from the input by rays;
+    // its sides lie inside the voxel-thick tube that keeps it in the level
+    // sets (volume/keep_lost_surface.h), between columns, where no ray
+    // finds them: buried by up to 1.06 voxel (0.74 mm, just over the 1% of
+    // the diagonal, 0.69 mm, asked of a cast).
+    for (const Vec3& p : fin.vertices)
+        if (std::hypot(p[0] - 1, p[1] - 2) > 22) EXPECT_LT(distance_to_parts(p, parts), 0.25 * voxel);
+    for (double x = 21; x <= 23; x += 0.5)
+        for (double z = -3; z <= 3; z += 0.5)
+            for (double y : {-0.15, 0.15}) {
+                const Vec3 p{1 + h * (x + y), 2 + h * (x - y), 3 + z};
+                EXPECT_LT(distance_to_parts(p, parts), 1.25 * voxel) << x << " " << y << " " << z;
+            }
+}
+
+TEST(MoldGenerationSlit, ASlitNarrowerThanAVoxelClosesFaithfully) {
+    // A slit 0.3 mm wide, 14 mm long and 6 mm deep cut into the sphere's
+    // top: narrower than the voxel (0.7 mm), it cannot be cast (the mold
+    // would need a fin thinner than a voxel) and closes, as the corpus
+    // checker allows for gaps under two voxels. The closure must stay
+    // within the fidelity asked of every cast (1% of the diagonal) of the
+    // sphere's surface over the slit, neither sinking into it nor bulging,
+    // and the rest of the input must be as faithful as without the slit.
+    openvdb::initialize();
+    const Mesh sphere = fabvdb::test::make_sphere({1, 2, 3}, 20.0, 4);
+    const Mesh slit = fabvdb::test::make_box({-6, 1.85, 17}, {8, 2.15, 30});
+    fabvdb::Progress progress;
+    const Mesh input = fabvdb::surface::mesh_boolean(
+        sphere, "sphere", {{fabvdb::surface::BooleanOperation::subtract, &slit, "slit"}}, progress);
+    const auto molds = two_part_molds(input);
+    std::vector<const Mesh*> parts;
+    for (const auto& cast : molds.parts) {
+        parts.push_back(&cast.part);
+        EXPECT_TRUE(fabvdb::test::closed_two_manifold(cast.part));
+        const auto lines = fabvdb::test::check_double_height_field(cast.part, cast.direction, 100);
+        EXPECT_EQ(lines.lines_over_two, 0u) << "max crossings " << lines.max_crossings;
     }
+    const double diagonal = fabvdb::bounding_box(input).diagonal();
+    double largest = 0, sum = 0;
+    size_t counted = 0;
+    for (const Vec3& p : input.vertices) {
+        const bool in_slit = p[1] > 1.8 && p[1] < 2.2 && p[2] < 3 + std::sqrt(400 - (p[0] - 1) * (p[0] - 1)) - 0.05;
+        if (in_slit) continue;
+        const double distance = distance_to_parts(p, parts);
+        largest = std::max(largest, distance);
+        sum += distance;
+        ++counted;
+    }
+    EXPECT_LT(largest, 0.01 * diagonal);
+    EXPECT_LT(sum / double(counted), 0.001 * diagonal);
+    for (double x = -5; x <= 7; x += 0.25) {
+        const Vec3 over{x, 2, 3 + std::sqrt(400 - (x - 1) * (x - 1))};
+        EXPECT_LT(distance_to_parts(over, parts), 0.01 * diagonal) << x;
+    }
+}
+
+TEST_F(MoldGeneration, TwoPartsMeetAtTheirSeam) {
+    // Where the parts meet inside the shell (their surface away from the
+    // input), each part's surface lies on the other's within a voxel: no
+    // gap or overlap a cast would show as a step or a hole. Each part
+    // meshes the seam from its own level set along its own direction, so
+    // the two copies differ by the level sets' interpolation (0.62 voxel at
+    // most here).
+    const Mesh &a = molds_->parts[0].part, &b = molds_->parts[1].part;
+    double largest = 0;
+    size_t seam_vertices = 0;
+    for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}})
+        for (const Vec3& p : from->vertices) {
+            const double r = std::hypot(p[0] - 1, p[1] - 2, p[2] - 3);
+            if (r > 19.3 || r < 17.7) continue;  // on the sphere or the inner wall, within a voxel
+            ++seam_vertices;
+            largest = std::max(largest, distance_to_parts(p, {to}));
+        }
+    EXPECT_GT(seam_vertices, 50u);
+    EXPECT_LT(largest, voxel);
 }
 
 void expect_refused(const nlohmann::json& document, const Mesh& input, const std::string& defect) {
