@@ -10,10 +10,12 @@
 #
 # Exits 0 when no run FAILs, 1 otherwise. Each model's record is kept in
 # OUT/runs/MODEL/record.json; the table is assembled from every record found,
-# so `--only MODEL` reruns one model and refreshes its row.
+# so `--only MODEL` reruns one model and refreshes its row, and `--resume`
+# keeps each model whose record came from the same binaries and recipe.
 import argparse
 import concurrent.futures
 import datetime
+import hashlib
 import json
 import os
 import re
@@ -206,6 +208,40 @@ def fidelity(runner, src, diagonal, outputs, voxel, extra=()):
     if cover["far_fraction"] > FIDELITY_FAR_SHARE or cover["mean"] > mean:
         return cover, "far from the input (%s, %s)" % (fig, cover["max_side"]), fig
     return cover, None, fig
+
+
+def file_digest(path):
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def run_identity(args):
+    """What a record must share to be kept by --resume: the digests of the
+    fabvdb binary, the libfabvdb it loads (ldd, under this environment) and
+    the checker, and every recipe setting that changes a cell."""
+    binaries = [os.path.abspath(args.fabvdb), args.checker]
+    linked = subprocess.run(["ldd", os.path.abspath(args.fabvdb)], capture_output=True, text=True).stdout
+    binaries += sorted(m.group(1) for m in re.finditer(r"libfabvdb\S* => (\S+)", linked))
+    return {"binaries": {os.path.basename(path): file_digest(path) for path in binaries},
+            "recipe": {"fit_mm": args.fit_mm, "wall_mm": WALL_MM, "time_cap_s": args.time_cap,
+                       "mem_cap": args.mem_cap, "check_cap_s": args.check_cap, "inside_out": args.inside_out,
+                       "subset": args.subset, "molds": not args.no_molds}}
+
+
+def resumable(row, args, identity):
+    """The model's record, when it holds every wanted command from a run of
+    the same identity; None otherwise."""
+    try:
+        with open(os.path.join(args.out, "runs", row["file"], "record.json")) as f:
+            rec = json.load(f)
+    except (OSError, ValueError):
+        return None
+    if rec.get("identity") != identity or any(c not in rec.get("runs", {}) for c in args.commands):
+        return None
+    return rec
 
 
 def process_model(row, args, runner, with_mold):
@@ -570,6 +606,9 @@ def main():
     p.add_argument("--fit", dest="fit_mm", type=float, default=60.0,
                    help="millimetres the longest side of each model is scaled to (--fit of every command)")
     p.add_argument("--check-cap", type=int, default=600, help="seconds per checker run")
+    p.add_argument("--resume", action="store_true",
+                   help="keep each model whose record came from the same binaries (by digest) and recipe and "
+                   "holds every wanted command; run the others")
     p.add_argument("--tables-only", action="store_true",
                    help="run nothing: write the tables from the records already in OUT/runs")
     args = p.parse_args()
@@ -598,8 +637,14 @@ def main():
                   key=lambda r: (r["triangles"], r["file"]))
     runner = Runner(args)
 
+    identity = run_identity(args)
+
     def one(row):
+        if args.resume and resumable(row, args, identity):
+            print("%-40s kept (--resume)" % row["file"], flush=True)
+            return []
         rec = process_model(row, args, runner, row["file"] in mold_set)
+        rec["identity"] = identity
         with open(os.path.join(args.out, "runs", row["file"], "record.json"), "w") as f:
             json.dump(rec, f, indent=1)
         bad = [c for c, v in rec["runs"].items() if v["result"] == "FAIL"]
