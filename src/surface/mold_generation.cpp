@@ -53,6 +53,7 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     restoration.input_name = options.input_name;
     std::vector<openvdb::FloatGrid::Ptr> restored =
         volume::restore_part_details(*input_grid, solids, restoration, progress);
+    clock.lap("detail restoration");
     // Input surface no restored part holds (fins, sheets and tips thinner
     // than a voxel, or left so by the split between two parts) comes back a
     // voxel thick in the part nearest to it, if within δ of it as restoration
@@ -67,7 +68,7 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
     volume::LostSurface lost;
     restored = volume::keep_lost_surface(restored, input, keep, progress, &lost);
     result.lost_triangles = lost.lost_triangles;
-    clock.lap("detail restoration");
+    clock.lap("lost surface");
 
     // Small gaps closed by deformation before anything is swept; each part's
     // gaps must be empty of the other parts (as restored or as deformed).
@@ -105,12 +106,15 @@ MoldGeneration generate_molds(const Mesh& input, const DecomposedModel& model, c
         return made;
     };
     std::vector<openvdb::FloatGrid::Ptr> made = sweep_all(restored);
+    clock.lap("sweep");
     // Runs that other parts split off a part go to those parts, and all are
     // swept again from the new split.
     const volume::HandOver handed = volume::hand_over_unkept_runs(restored, made, input_grid.get(), progress);
-    if (std::any_of(handed.given.begin(), handed.given.end(), [](double v) { return v > 0; }))
+    clock.lap("hand-over");
+    if (std::any_of(handed.given.begin(), handed.given.end(), [](double v) { return v > 0; })) {
         made = sweep_all(handed.parts);
-    clock.lap("sweep");
+        clock.lap("second sweep");
+    }
 
     // The parts' surfaces are read off the input where they hold it.
     const volume::SurfaceRayCaster input_rays(input);
