@@ -1,9 +1,10 @@
 # operators.py — the add-on's operators, each on the active mesh object
-# through the fabvdb package: inspect, select problem edges, repair, hollow,
+# through the fabvdb package: inspect, select problem spots, repair, hollow,
 # drain (holes, heat map, routine), decompose and its edits (no-cut, smooth,
 # cut, merge, undo, redo), molds. Results are new objects, collections and
 # attributes; findings are listed in the panel (RESULTS).
 # Copyright (C) 2026 the fabvdb developers. GPL-3.0-or-later.
+import bmesh
 import bpy
 import numpy as np
 
@@ -29,7 +30,13 @@ class FABVDB_OT_inspect(FabvdbJob, bpy.types.Operator):
 
     def prepare(self, context):
         obj = context.active_object
-        return {"name": obj.name, "mesh": bridge.fabvdb_mesh(obj, context), "scale": bridge.mm_per_unit(context.scene)}
+        points, triangles, polygon = bridge.object_arrays(obj, context.evaluated_depsgraph_get())
+        scale = bridge.mm_per_unit(context.scene)
+        # The problem faces can be selected on the object's own polygons only
+        # when its modifiers left them as they are.
+        same_polygons = int(polygon.max(initial=-1)) + 1 == len(obj.data.polygons)
+        return {"name": obj.name, "mesh": fabvdb.Mesh(points * scale, triangles), "scale": scale,
+                "polygon": polygon if same_polygons else None}
 
     def work(self, inputs, ctx, progress):
         return fabvdb.inspect(inputs["mesh"], context=ctx, progress=progress)
@@ -50,12 +57,21 @@ class FABVDB_OT_inspect(FabvdbJob, bpy.types.Operator):
         if len(lines) == 2 or (len(lines) == 3 and report["closed"]):
             lines.append("no defect found")
         RESULTS[inputs["name"]] = lines
-        context.active_object["fabvdb_inspect"] = report["closed"]
+        obj = context.active_object
+        obj["fabvdb_inspect"] = report["closed"]
+        # The polygons holding a crossing or degenerate triangle, for Select Problems.
+        if inputs["polygon"] is not None:
+            triangles = np.array(report["self_intersecting_triangle_indices"] + report["degenerate_triangle_indices"],
+                                 dtype=np.int64)
+            obj["fabvdb_problem_faces"] = np.unique(inputs["polygon"][triangles]).tolist()
+        elif "fabvdb_problem_faces" in obj:
+            del obj["fabvdb_problem_faces"]
         self.report({'INFO'}, "fabvdb: " + "; ".join(lines))
 
 
 class FABVDB_OT_select_problems(bpy.types.Operator):
-    """Select the problem spots of the active object in Edit Mode: open and non-manifold edges"""
+    """Select the problem spots of the active object in Edit Mode: open and non-manifold edges, and the faces
+    with crossing or degenerate triangles that the last Inspect found"""
     bl_idname = "fabvdb.select_problems"
     bl_label = "Select Problem Edges"
     bl_options = {'REGISTER', 'UNDO'}
@@ -70,6 +86,16 @@ class FABVDB_OT_select_problems(bpy.types.Operator):
         bpy.ops.mesh.select_mode(type='EDGE')
         bpy.ops.mesh.select_all(action='DESELECT')
         bpy.ops.mesh.select_non_manifold()
+        faces = context.active_object.get("fabvdb_problem_faces")
+        if faces:
+            data = context.active_object.data
+            mesh = bmesh.from_edit_mesh(data)
+            mesh.faces.ensure_lookup_table()
+            for index in faces:
+                if index < len(mesh.faces):
+                    mesh.faces[index].select_set(True)
+            mesh.select_flush_mode()
+            bmesh.update_edit_mesh(data)
         return {'FINISHED'}
 
 

@@ -69,8 +69,15 @@ nlohmann::json inspect_mesh(const Mesh& mesh, Progress& progress) {
     std::vector<bool> is_degenerate(mesh.triangles.size(), false);
     for (uint32_t t : degenerate) is_degenerate[t] = true;
     size_t intersecting_with_degenerate = 0;
-    for (const auto& [i, j] : intersecting)
+    std::vector<uint32_t> crossing;
+    crossing.reserve(2 * intersecting.size());
+    for (const auto& [i, j] : intersecting) {
         if (is_degenerate[i] || is_degenerate[j]) ++intersecting_with_degenerate;
+        crossing.push_back(i);
+        crossing.push_back(j);
+    }
+    std::sort(crossing.begin(), crossing.end());
+    crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
 
     nlohmann::json volume = nullptr;
     size_t negative_shells = 0;
@@ -98,6 +105,8 @@ nlohmann::json inspect_mesh(const Mesh& mesh, Progress& progress) {
     report["duplicate_triangles"] = duplicates;
     report["self_intersecting_pairs"] = intersecting.size();
     report["self_intersecting_pairs_degenerate"] = intersecting_with_degenerate;
+    report["self_intersecting_triangle_indices"] = crossing;
+    report["degenerate_triangle_indices"] = degenerate;
     report["volume"] = volume;
     report["negative_volume_shells"] = negative_shells;
     report["genus"] = topology.genus ? nlohmann::json(*topology.genus) : nlohmann::json(nullptr);

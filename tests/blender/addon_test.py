@@ -92,6 +92,32 @@ def run():
     bpy.ops.fabvdb.inspect()
     check(sphere["fabvdb_inspect"] and "closed" in fabvdb_blender.operators.RESULTS["sphere"], "inspect: closed")
 
+    # Inspect and Select Problems: two cubes of 4 cm in one object, the
+    # second moved by (2, 1, 0.5) cm, cross each other; the faces they cross
+    # on are the first's +x, +y and +z faces and the second's -x, -y and -z
+    # faces (the second's other faces, and the first's, miss the other cube).
+    bpy.ops.mesh.primitive_cube_add(size=0.04, location=(0, 0.2, 0))
+    first = bpy.context.active_object
+    bpy.ops.mesh.primitive_cube_add(size=0.04, location=(0.02, 0.21, 0.005))
+    second = bpy.context.active_object
+    activate(first)
+    second.select_set(True)
+    bpy.ops.object.join()
+    crossed = bpy.context.active_object
+    crossed.name = "crossed_cubes"
+    bpy.ops.fabvdb.inspect()
+    check(any(line.startswith("self-intersecting pairs") for line in fabvdb_blender.operators.RESULTS["crossed_cubes"]),
+          "inspect: crossing triangles listed")
+    bpy.ops.fabvdb.select_problems()
+    bpy.ops.object.mode_set(mode='OBJECT')
+    centres = {(round(p.center[0] * 100, 1), round(p.center[1] * 100, 1), round(p.center[2] * 100, 1))
+               for p in crossed.data.polygons if p.select}
+    # Face centres in cm, in the joined object's frame (the first cube's).
+    expected = {(2.0, 0.0, 0.0), (0.0, 2.0, 0.0), (0.0, 0.0, 2.0),
+                (0.0, 1.0, 0.5), (2.0, -1.0, 0.5), (2.0, 1.0, -1.5)}
+    check(centres == expected, "select problems: the six crossing faces (%s)" % sorted(centres))
+    bpy.data.objects.remove(crossed)
+
     # Repair: an open box (a face deleted) comes back closed, as a new object.
     bpy.ops.mesh.primitive_cube_add(size=0.04, location=(-0.1, 0, 0))
     box = bpy.context.active_object

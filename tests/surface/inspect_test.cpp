@@ -235,6 +235,7 @@ TEST(Inspect, DegenerateTriangles) {
     box.triangles.push_back({n + 1, n + 3, n + 2});  // sliver, but a real triangle
     const json r = inspect(box);
     EXPECT_EQ(r["degenerate_triangles"], 3);
+    EXPECT_EQ(r["degenerate_triangle_indices"], json({12, 13, 14}));
     EXPECT_EQ(r["vertices"], 14);
     EXPECT_EQ(r["welded"]["vertices"], 13);
 }
@@ -304,6 +305,27 @@ TEST(Inspect, PillarThroughABoxMakesEightPairs) {
     EXPECT_EQ(r["self_intersecting_pairs_degenerate"], 0);
     EXPECT_EQ(r["components"], 2);
     EXPECT_TRUE(r["closed"].get<bool>());
+    // The triangles to show: the pillar's eight sides (its triangles, after
+    // the box's 12, not lying in z = 1 or z = 3) and the box's top triangle
+    // under it (in z = 2, holding the pillar's footprint centre (0.4, 1.5)).
+    std::vector<uint32_t> expected;
+    for (size_t t = 0; t < 12; ++t) {
+        const auto& c = mesh.triangles[t];
+        const Vec3 &a = mesh.vertices[c[0]], &b = mesh.vertices[c[1]], &d = mesh.vertices[c[2]];
+        if (a[2] != 2 || b[2] != 2 || d[2] != 2) continue;
+        const auto side = [](const Vec3& p, const Vec3& q) {
+            return (q[0] - p[0]) * (1.5 - p[1]) - (q[1] - p[1]) * (0.4 - p[0]);
+        };
+        const double s0 = side(a, b), s1 = side(b, d), s2 = side(d, a);
+        if ((s0 > 0 && s1 > 0 && s2 > 0) || (s0 < 0 && s1 < 0 && s2 < 0)) expected.push_back(uint32_t(t));
+    }
+    for (size_t t = 12; t < mesh.triangles.size(); ++t) {
+        const auto& c = mesh.triangles[t];
+        const double z0 = mesh.vertices[c[0]][2], z1 = mesh.vertices[c[1]][2], z2 = mesh.vertices[c[2]][2];
+        if (!(z0 == z1 && z1 == z2)) expected.push_back(uint32_t(t));
+    }
+    ASSERT_EQ(expected.size(), 9u);
+    EXPECT_EQ(r["self_intersecting_triangle_indices"].get<std::vector<uint32_t>>(), expected);
 }
 
 std::vector<std::pair<uint32_t, uint32_t>> pairs_of(const Mesh& mesh) {
