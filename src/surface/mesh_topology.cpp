@@ -1,11 +1,10 @@
-//! Edge table, components and the topology summary, all by sorting and
-//! union-find on indices (linear-logarithmic in the triangle count).
+//! Components and the topology summary from the edge table, by union-find on
+//! indices (linear-logarithmic in the triangle count).
 #include "surface/mesh_topology.h"
 
 #include <algorithm>
 #include <limits>
 #include <numeric>
-#include <tuple>
 
 namespace fabvdb::surface {
 namespace {
@@ -89,24 +88,6 @@ std::vector<std::vector<uint32_t>> boundary_loops(const Mesh& mesh, const EdgeTa
         loops[loop_of[root]].push_back(v);
     }
     return loops;
-}
-
-EdgeTable build_edge_table(const Mesh& mesh) {
-    EdgeTable table;
-    table.uses.reserve(mesh.triangles.size() * 3);
-    for (size_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-            if (a != b) table.uses.push_back({std::min(a, b), std::max(a, b), uint32_t(t), a < b});
-        }
-    std::sort(table.uses.begin(), table.uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-        return std::tie(x.lo, x.hi, x.triangle, x.forward) < std::tie(y.lo, y.hi, y.triangle, y.forward);
-    });
-    for (size_t u = 0; u < table.uses.size(); ++u)
-        if (u == 0 || table.uses[u].lo != table.uses[u - 1].lo || table.uses[u].hi != table.uses[u - 1].hi)
-            table.begin.push_back(u);
-    table.begin.push_back(table.uses.size());
-    return table;
 }
 
 std::vector<uint32_t> triangle_components(const Mesh& mesh, size_t& component_count) {

@@ -1,7 +1,8 @@
 //! Combinatorial topology of a triangle mesh on its vertex indices as stored
-//! (no welding: weld_vertices.h does that first when wanted). Edges are
-//! unordered vertex pairs; an edge used by one triangle is a boundary edge, by
-//! three or more a non-manifold edge. Pure functions on the mesh.
+//! (no welding: weld_vertices.h does that first when wanted), from its edge
+//! table (volume/edge_table.h). Edges are unordered vertex pairs; an edge
+//! used by one triangle is a boundary edge, by three or more a non-manifold
+//! edge. Pure functions on the mesh.
 #pragma once
 
 #include <cstddef>
@@ -10,30 +11,13 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "volume/edge_table.h"
 
 namespace fabvdb::surface {
 
-//! One side of a triangle along an edge: the edge is (lo, hi) with lo < hi, and
-//! `forward` says whether the triangle runs from lo to hi.
-struct EdgeUse {
-    uint32_t lo;
-    uint32_t hi;
-    uint32_t triangle;
-    bool forward;
-};
-
-//! Every edge of the mesh with the triangle sides that use it. The uses are
-//! sorted by (lo, hi, triangle); edge i owns uses[begin[i]] .. uses[begin[i+1]-1].
-//! A triangle with a repeated index has no side from a vertex to itself; its
-//! two other sides both use the same edge.
-struct EdgeTable {
-    std::vector<EdgeUse> uses;
-    std::vector<size_t> begin;  // size: edge count + 1
-    size_t edge_count() const { return begin.size() - 1; }
-    size_t use_count(size_t edge) const { return begin[edge + 1] - begin[edge]; }
-};
-
-EdgeTable build_edge_table(const Mesh& mesh);
+using volume::build_edge_table;
+using volume::EdgeTable;
+using volume::EdgeUse;
 
 //! The component (0-based, numbered in order of first triangle) of every
 //! triangle, where triangles sharing a vertex are in the same component;

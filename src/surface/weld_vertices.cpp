@@ -1,27 +1,21 @@
-//! Welding of exactly coincident vertices: sorts the vertex indices by
-//! position, so equal positions form runs, and maps each run to its lowest index.
+//! Welding of exactly coincident vertices: each position id
+//! (volume/position_ids.h) maps to its lowest vertex index.
 #include "surface/weld_vertices.h"
 
-#include <algorithm>
-#include <numeric>
+#include <limits>
+
+#include "volume/position_ids.h"
 
 namespace fabvdb::surface {
 
 std::vector<uint32_t> coincident_vertex_map(const Mesh& mesh) {
-    const size_t count = mesh.vertices.size();
-    std::vector<uint32_t> order(count);
-    std::iota(order.begin(), order.end(), 0u);
-    // std::array's operator< compares lexicographically with double's <, under
-    // which -0.0 and 0.0 are equivalent: equal positions end up adjacent.
-    std::stable_sort(order.begin(), order.end(),
-                     [&](uint32_t a, uint32_t b) { return mesh.vertices[a] < mesh.vertices[b]; });
-    std::vector<uint32_t> map(count);
-    for (size_t run = 0; run < count;) {
-        size_t end = run + 1;
-        while (end < count && !(mesh.vertices[order[run]] < mesh.vertices[order[end]])) ++end;
-        // stable_sort keeps equal positions in index order: the run starts with its lowest index.
-        for (size_t k = run; k < end; ++k) map[order[k]] = order[run];
-        run = end;
+    const volume::PositionIds ids = volume::position_ids(mesh);
+    constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
+    std::vector<uint32_t> first_at(ids.count, none);
+    std::vector<uint32_t> map(mesh.vertices.size());
+    for (uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (first_at[ids.id[v]] == none) first_at[ids.id[v]] = v;
+        map[v] = first_at[ids.id[v]];
     }
     return map;
 }

@@ -5,12 +5,14 @@
 //! a mesh with a hole or an inconsistently oriented piece is not. Its
 //! generalized winding number is then an integer, constant on every
 //! connected region off the surface. Degenerate triangles count like others.
+//! Takes the edge table (edge_table.h) of the mesh welded by position
+//! (position_ids.h); one pass over it.
 #pragma once
 
-#include "core/mesh.h"
+#include "volume/edge_table.h"
 
 namespace fabvdb::volume {
 
-bool is_closed_cycle(const Mesh& mesh);
+bool is_closed_cycle(const EdgeTable& welded_edges);
 
 }  // namespace fabvdb::volume

@@ -10,6 +10,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "volume/edge_table.h"
+
 namespace fabvdb::volume {
 
 namespace {
@@ -50,32 +52,16 @@ struct SharpEdge {
 // Edges used by exactly two triangles in opposite directions (consistently
 // oriented) whose normals turn by more than the sharp angle.
 std::vector<SharpEdge> sharp_edges(const Mesh& input) {
-    struct HalfEdge {
-        uint64_t key;
-        uint32_t triangle;
-        bool ascending;
-    };
-    std::vector<HalfEdge> half_edges;
-    half_edges.reserve(3 * input.triangles.size());
-    for (uint32_t t = 0; t < input.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = input.triangles[t][k], b = input.triangles[t][(k + 1) % 3];
-            if (a == b) continue;
-            half_edges.push_back({(uint64_t(std::min(a, b)) << 32) | std::max(a, b), t, a < b});
-        }
-    tbb::parallel_sort(half_edges.begin(), half_edges.end(),
-                       [](const HalfEdge& x, const HalfEdge& y) { return x.key < y.key; });
+    const EdgeTable table = build_edge_table(input);
     std::vector<SharpEdge> edges;
-    for (size_t i = 0; i < half_edges.size();) {
-        size_t end = i + 1;
-        while (end < half_edges.size() && half_edges[end].key == half_edges[i].key) ++end;
-        if (end - i == 2 && half_edges[i].ascending != half_edges[i + 1].ascending) {
-            const Vector n0 = unit_normal(input, input.triangles[half_edges[i].triangle]);
-            const Vector n1 = unit_normal(input, input.triangles[half_edges[i + 1].triangle]);
-            if (n0 != CGAL::NULL_VECTOR && n1 != CGAL::NULL_VECTOR && n0 * n1 < sharp_cos)
-                edges.push_back({uint32_t(half_edges[i].key >> 32), uint32_t(half_edges[i].key), n0, n1});
-        }
-        i = end;
+    for (size_t e = 0; e < table.edge_count(); ++e) {
+        if (table.use_count(e) != 2) continue;
+        const EdgeUse &first = table.uses[table.begin[e]], &second = table.uses[table.begin[e] + 1];
+        if (first.forward == second.forward) continue;
+        const Vector n0 = unit_normal(input, input.triangles[first.triangle]);
+        const Vector n1 = unit_normal(input, input.triangles[second.triangle]);
+        if (n0 != CGAL::NULL_VECTOR && n1 != CGAL::NULL_VECTOR && n0 * n1 < sharp_cos)
+            edges.push_back({first.lo, first.hi, n0, n1});
     }
     return edges;
 }

@@ -20,6 +20,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -33,10 +34,12 @@
 #include "core/error.h"
 #include "core/stage_clock.h"
 #include "volume/closed_cycle.h"
+#include "volume/edge_table.h"
 #include "volume/enclosed_share.h"
 #include "volume/leaf_winding.h"
 #include "volume/memory_estimate.h"
 #include "volume/orient_soup.h"
+#include "volume/position_ids.h"
 #include "volume/progress_interrupter.h"
 #include "volume/rebuild_band.h"
 #include "volume/unsigned_band.h"
@@ -258,7 +261,16 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
 
     progress.stage("winding number tree");
     const auto winding = std::make_unique<WindingNumber>(mesh);
-    const WindingGradientBound gradient_bound(mesh);
+    // One edge table of the input welded by position serves the gradient
+    // bound and the closed-cycle check.
+    std::optional<WindingGradientBound> gradient_bound;
+    bool closed = false;
+    {
+        const Mesh welded = weld_positions(mesh);
+        const EdgeTable edges = build_edge_table(welded);
+        gradient_bound.emplace(welded, edges);
+        closed = is_closed_cycle(edges);
+    }
     clock.lap("winding number tree");
     // What encloses nothing is told apart before any voxel is built.
     progress.stage("enclosed share");
@@ -288,7 +300,6 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
     std::vector<double> leaf_gradient;  // per band leaf, the bound on |grad w| over it
     std::vector<char> band_exact;       // per band leaf, whether every w was taken at its voxel
     std::atomic<uint64_t> clearly_inside_voxels{0};
-    const bool closed = is_closed_cycle(mesh);
     if (encloses) {
         progress.stage("winding number");
         openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
@@ -299,7 +310,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         for_each_index(leaves.leafCount(), progress, [&](size_t i) {
             uint64_t inside = 0;
             float* leaf_winding = &band_winding[i * leaf_size];
-            leaf_gradient[i] = gradient_bound(leaf_box(leaves.leaf(i), *transform), gradient_cap(voxel));
+            leaf_gradient[i] = (*gradient_bound)(leaf_box(leaves.leaf(i), *transform), gradient_cap(voxel));
             band_exact[i] = band_leaf_winding(leaves.leaf(i), *winding, *transform, leaf_gradient[i], leaf_winding);
             for (auto voxel_it = leaves.leaf(i).beginValueOn(); voxel_it; ++voxel_it) {
                 const double w = leaf_winding[voxel_it.pos()];
@@ -339,7 +350,7 @@ openvdb::FloatGrid::Ptr signed_distance_from_mesh(const Mesh& input, const Signe
         if (closed)
             openvdb::tools::signedFloodFill(grid->tree());
         else
-            add_off_band_winding(*grid, *winding, bounding_box(mesh), gradient_bound, band_winding, leaf_gradient,
+            add_off_band_winding(*grid, *winding, bounding_box(mesh), *gradient_bound, band_winding, leaf_gradient,
                                  band_exact, progress);
         band_winding = {};
         progress.stage("rebuild");

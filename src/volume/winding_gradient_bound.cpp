@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
-#include <utility>
 
 #include "core/vec3_ops.h"
 
@@ -36,32 +34,25 @@ BoundingBox segment_box(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-WindingGradientBound::WindingGradientBound(const Mesh& mesh) {
-    // Directed edges of the non-zero-area triangles as (ordered position pair, ±1).
-    std::vector<std::pair<std::pair<Vec3, Vec3>, int>> directed;
-    directed.reserve(3 * mesh.triangles.size());
-    for (const Triangle& t : mesh.triangles) {
-        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+WindingGradientBound::WindingGradientBound(const Mesh& welded, const EdgeTable& edges) {
+    std::vector<char> has_area(welded.triangles.size());
+    for (size_t t = 0; t < welded.triangles.size(); ++t) {
+        const Triangle& tri = welded.triangles[t];
+        const Vec3 &a = welded.vertices[tri[0]], &b = welded.vertices[tri[1]], &c = welded.vertices[tri[2]];
         const Vec3 n = cross(b - a, c - a);
-        if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;
-        for (int corner = 0; corner < 3; ++corner) {
-            const Vec3& from = mesh.vertices[t[corner]];
-            const Vec3& to = mesh.vertices[t[(corner + 1) % 3]];
-            if (from < to) directed.push_back({{from, to}, 1});
-            else directed.push_back({{to, from}, -1});
-        }
+        has_area[t] = n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
     }
-    std::sort(directed.begin(), directed.end(),
-              [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (size_t i = 0; i < directed.size();) {
+    // Position ids order as positions do: the edges come in the order of
+    // their (lower, higher) end points.
+    for (size_t e = 0; e < edges.edge_count(); ++e) {
         int uses = 0;
-        size_t j = i;
-        for (; j < directed.size() && directed[j].first == directed[i].first; ++j) uses += directed[j].second;
+        for (size_t u = edges.begin[e]; u < edges.begin[e + 1]; ++u)
+            if (has_area[edges.uses[u].triangle]) uses += edges.uses[u].forward ? 1 : -1;
         if (uses != 0) {
-            const Vec3 &a = directed[i].first.first, &b = directed[i].first.second;
+            const EdgeUse& use = edges.uses[edges.begin[e]];
+            const Vec3 &a = welded.vertices[use.lo], &b = welded.vertices[use.hi];
             edges_.push_back({a, b, std::abs(uses) * norm(b - a)});
         }
-        i = j;
     }
     if (!edges_.empty()) {
         nodes_.reserve(2 * edges_.size() / edges_per_leaf + 2);

@@ -6,7 +6,9 @@
 //!     |∇w(q)| <= Σ_e |m_e| · length_e / (4π · distance(q, e)²).
 //! A closed, consistently oriented soup has no such edge: w is constant
 //! between its sheets. Edges are matched by exact position, over the triangles
-//! WindingNumber keeps (those of non-zero area). The edges sit in a tree whose
+//! WindingNumber keeps (those of non-zero area): the bound reads the edge
+//! table (edge_table.h) of the mesh welded by position (position_ids.h),
+//! which the caller builds once for every check of the input. The edges sit in a tree whose
 //! far nodes are bounded by their total length at their box's distance, so a
 //! query costs about the log of the edge count where edges are far, and stops
 //! once the bound reaches the caller's cap. Built once, queried concurrently.
@@ -16,12 +18,14 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "volume/edge_table.h"
 
 namespace fabvdb::volume {
 
 class WindingGradientBound {
 public:
-    explicit WindingGradientBound(const Mesh& mesh);
+    //! `welded` is the mesh welded by position, `edges` its edge table.
+    WindingGradientBound(const Mesh& welded, const EdgeTable& edges);
 
     //! An upper bound (1/mm) on |∇w| at every point of `box` off the surface;
     //! at least `cap` when the bound reaches it (the traversal stops there),

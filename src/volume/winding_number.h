@@ -6,7 +6,8 @@
 //! et al. 2018: a bounding-volume tree over the triangles whose far nodes are
 //! replaced by their dipole (the area-weighted normal at the area centroid),
 //! and near leaves summed exactly (their solid angles as the argument of one
-//! product of complex numbers, so a query takes one atan2). Built once, then
+//! product of complex numbers, so a query takes one atan2). Built once (its
+//! subtrees in parallel, TBB; the tree does not depend on the threads), then
 //! queried concurrently from any number of threads (queries are const and
 //! allocate nothing).
 #pragma once
@@ -38,8 +39,10 @@ private:
         uint32_t first;         // leaf: first triangle; inner: the right child (the left is the next node)
         uint32_t count;         // leaf: number of triangles; inner: 0 (two children)
     };
-    uint32_t build(uint32_t first, uint32_t count, std::vector<double>& centroids, std::vector<uint32_t>& order,
-                   double accuracy);
+    //! Fills nodes_[index ..] with the subtree over order[first .. first + count)
+    //! (disjoint subtrees in parallel); returns the index after its last node.
+    uint32_t build(uint32_t first, uint32_t count, uint32_t index, const std::vector<double>& centroids,
+                   std::vector<uint32_t>& order, double accuracy);
 
     std::vector<Node> nodes_;
     std::vector<double> corners_;  // 9 doubles per triangle, in tree order

@@ -1,4 +1,4 @@
-// Edge table, components and the topology summary against counts known by
+// Components and the topology summary against counts known by
 // hand: a box (8 vertices, 18 edges, genus 0), a torus grid (genus 1), boxes
 // with holes (boundary edges, loops and their vertices), a fin (a non-manifold edge), two
 // boxes pinched at one vertex, a flipped triangle (inconsistent edges), the
@@ -17,46 +17,6 @@ namespace {
 
 using test::make_box;
 using test::merged;
-
-TEST(MeshTopology, EdgeTableOfOneTriangle) {
-    Mesh mesh;
-    mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    mesh.triangles = {{2, 0, 1}};  // sides 2->0, 0->1, 1->2
-    const EdgeTable table = build_edge_table(mesh);
-    ASSERT_EQ(table.edge_count(), 3u);
-    ASSERT_EQ(table.uses.size(), 3u);
-    EXPECT_EQ(table.begin, (std::vector<size_t>{0, 1, 2, 3}));
-    const struct {
-        uint32_t lo, hi;
-        bool forward;
-    } expected[3] = {{0, 1, true}, {0, 2, false}, {1, 2, true}};
-    for (size_t e = 0; e < 3; ++e) {
-        EXPECT_EQ(table.uses[e].lo, expected[e].lo) << "edge " << e;
-        EXPECT_EQ(table.uses[e].hi, expected[e].hi) << "edge " << e;
-        EXPECT_EQ(table.uses[e].forward, expected[e].forward) << "edge " << e;
-        EXPECT_EQ(table.uses[e].triangle, 0u);
-        EXPECT_EQ(table.use_count(e), 1u);
-    }
-}
-
-TEST(MeshTopology, EdgeTableOfABoxGroupsEachEdgesTwoUses) {
-    const EdgeTable table = build_edge_table(make_box({0, 0, 0}, {1, 1, 1}));
-    ASSERT_EQ(table.edge_count(), 18u);  // 12 box edges and 6 face diagonals
-    for (size_t e = 0; e < table.edge_count(); ++e) {
-        ASSERT_EQ(table.use_count(e), 2u) << "edge " << e;
-        const EdgeUse& a = table.uses[table.begin[e]];
-        const EdgeUse& b = table.uses[table.begin[e] + 1];
-        EXPECT_LT(a.lo, a.hi);
-        EXPECT_EQ(a.lo, b.lo);
-        EXPECT_EQ(a.hi, b.hi);
-        EXPECT_LT(a.triangle, b.triangle);
-        EXPECT_NE(a.forward, b.forward) << "outward box: its two sides run opposite ways";
-        if (e > 0) {
-            const EdgeUse& previous = table.uses[table.begin[e] - 1];
-            EXPECT_TRUE(previous.lo < a.lo || (previous.lo == a.lo && previous.hi < a.hi));
-        }
-    }
-}
 
 TEST(MeshTopology, RepeatedIndexUsesOneEdgeTwice) {
     Mesh mesh;

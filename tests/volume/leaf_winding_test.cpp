@@ -10,7 +10,9 @@
 
 #include "core/progress.h"
 #include "support/shapes.h"
+#include "volume/edge_table.h"
 #include "volume/leaf_winding.h"
+#include "volume/position_ids.h"
 #include "volume/unsigned_band.h"
 #include "volume/winding_gradient_bound.h"
 
@@ -34,7 +36,8 @@ Counts check_sides(const Mesh& mesh, double voxel) {
     const auto transform = openvdb::math::Transform::createLinearTransform(voxel);
     auto grid = volume::unsigned_band(mesh, *transform, 3.0f, progress);
     const volume::WindingNumber winding(mesh);
-    const volume::WindingGradientBound gradient(mesh);
+    const Mesh welded = volume::weld_positions(mesh);
+    const volume::WindingGradientBound gradient(welded, volume::build_edge_table(welded));
     const float background = grid->background();
     const auto exact = [&](const openvdb::Coord& ijk) {
         const openvdb::Vec3d p = transform->indexToWorld(ijk);

@@ -3,7 +3,7 @@
 // 1/2 across the mouth of an open box. The exact sum equals the triangles'
 // solid angles taken one by one (tests/support's winding number, one atan2
 // each), also where they add up past ±π (every face of an octahedron around
-// its centre, flipped or not).
+// its centre, flipped or not). A tree built in parallel is the same each time.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,6 +31,23 @@ TEST(WindingNumber, TreeMatchesExactSum) {
         const double exact = winding.exact(q), fast = winding(q);
         EXPECT_NEAR(fast, exact, 0.1);
         if (std::abs(exact - 0.5) > 0.1) EXPECT_EQ(fast >= 0.5, exact >= 0.5);
+    }
+}
+
+// A tree over more triangles than one task builds (its subtrees built in
+// parallel) agrees with the exact sum as well, and is the same tree each
+// time it is built.
+TEST(WindingNumber, TreeBuiltInParallelMatchesExactSum) {
+    const Mesh sphere = fabvdb::test::make_sphere({1, 2, 3}, 10.0, 6);
+    ASSERT_GT(sphere.triangles.size(), 50000u);
+    const WindingNumber winding(sphere), again(sphere);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
+    for (int i = 0; i < 200; ++i) {
+        const fabvdb::Vec3 q{coordinate(random), coordinate(random), coordinate(random)};
+        const double exact = winding.exact(q), fast = winding(q);
+        EXPECT_NEAR(fast, exact, 0.1);
+        EXPECT_EQ(fast, again(q));
     }
 }
 
