@@ -7,6 +7,7 @@
 #include <map>
 
 #include <Eigen/Eigenvalues>
+#include <openvdb/tools/FastSweeping.h>
 
 #include "check/build_fit.h"
 #include "check/overhang_triangles.h"
@@ -165,10 +166,12 @@ nlohmann::json units_check(const BoundingBox& box, double volume) {
     std::string message = "the size suits millimetres (longest side " + mm(guess.longest) + ")";
     if (guess.suspicious) {
         message = "longest side " + mm(guess.longest) + (guess.longest < 10.0 ? ": small" : ": large") + " for mm";
-        for (size_t i = 0; i < guess.readings.size(); ++i)
-            message += std::string(i == 0 ? "; if it is in " : ", or in ") + guess.readings[i].unit + ", scale by " +
-                       std::to_string(guess.readings[i].scale).substr(0, 6) + " (--scale) to " +
-                       mm(guess.readings[i].longest);
+        for (size_t i = 0; i < guess.readings.size(); ++i) {
+            char text[96];
+            std::snprintf(text, sizeof text, "%s%s, scale by %g (--scale) to %.4g mm", i == 0 ? "; if it is in " : ", or in ",
+                          guess.readings[i].unit.c_str(), guess.readings[i].scale, guess.readings[i].longest);
+            message += text;
+        }
     }
     nlohmann::json check = verdict(guess.suspicious ? warn : pass, message);
     check["size"] = vec_json(size);
@@ -399,12 +402,22 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     const double gap_reach = p.min_hole * (1.0 + p.margin_fraction);
     volume::SignedDistanceOptions sdf;
     sdf.voxel_size = voxel;
-    sdf.half_band_voxels = int(std::ceil(std::max(wall_reach, gap_reach) / voxel)) + 5;
     sdf.memory_budget_bytes = options.memory_budget_bytes;
     sdf.input_name = options.input_name;
     volume::SignedDistanceStats stats;
-    const openvdb::FloatGrid::Ptr grid = volume::signed_distance_from_mesh(mesh, sdf, progress, &stats);
+    openvdb::FloatGrid::Ptr grid = volume::signed_distance_from_mesh(mesh, sdf, progress, &stats);
     clock.add_laps(stats.timings);
+    // The walks need the band to reach past the largest minimum on both
+    // sides; fast sweeping widens it (the eikonal solution, exact for the
+    // plane branches the ridge fit relies on) far quicker than a wider
+    // band from the mesh.
+    const int reach = int(std::ceil(std::max(wall_reach, gap_reach) / voxel)) + 5;
+    if (reach > sdf.half_band_voxels) {
+        progress.stage("widen band");
+        grid = openvdb::tools::dilateSdf(*grid, reach - sdf.half_band_voxels, openvdb::tools::NN_FACE_EDGE_VERTEX);
+        progress.check();
+        clock.lap("widen band");
+    }
 
     progress.stage("extract");
     const Mesh surface = volume::extract_mesh(*grid, 0.0, progress);

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "support/shapes.h"
+#include "support/tube.h"
 #include "support/temp_files.h"
 
 namespace fabvdb::check {

@@ -23,9 +23,6 @@ Mesh make_torus(const Vec3& center, double major, double minor, int segments_maj
 //! A torus about the origin standing up in the xz plane (its axis along y), so
 //! lines along z cross it four times: a part that is no double height field.
 Mesh make_standing_torus(double major, double minor, int segments_major, int segments_minor);
-//! A closed tube around the z axis from radius r0 to r1 (r0 = 0: a solid
-//! pin of diameter 2·r1), z from 0 to `height`, `n` segments around.
-Mesh make_tube(double r0, double r1, double height, int n);
 //! The same mesh with every triangle's orientation flipped.
 Mesh flipped(Mesh mesh);
 //! Two meshes as one (vertex indices of `b` shifted).

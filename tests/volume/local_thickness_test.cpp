@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "support/shapes.h"
+#include "support/tube.h"
 
 namespace fabvdb::volume {
 namespace {
