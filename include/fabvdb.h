@@ -871,6 +871,59 @@ FABVDB_API fabvdb_status fabvdb_mesh_mold(fabvdb_ctx* ctx, const fabvdb_mesh* me
                                           const fabvdb_mold_options* opts, const char* out_dir,
                                           fabvdb_report** out_report);
 
+/* ------------------------------------------------------------------------- */
+/* Printability (fabvdb check)                                                */
+/* ------------------------------------------------------------------------- */
+/* Options of fabvdb_mesh_check. Fill with fabvdb_check_options_init().
+ * (since 0.1) */
+typedef struct fabvdb_check_options {
+    size_t struct_size;          /* sizeof(fabvdb_check_options), set by _init */
+    const char* process;         /* "sla" (default: resin), "powder" (SLS, MJF, binder jetting),
+                                    "fdm", or the path of a JSON profile (FILE.json; keys in
+                                    docs/check.md). Borrowed. */
+    double up[3];                /* the build direction in the part's frame, need not be
+                                    unit; default 0 0 1 */
+    double build_volume[3];      /* the printer's build volume, mm; default 0 0 0: not checked */
+    double voxel_size;           /* mm, >= 0; 0 (default): the larger of the process' minimum
+                                    wall / 4 and the longest side / resolution */
+    int resolution;              /* >= 1; voxels along the longest side that bound the
+                                    automatic voxel size; default 400 */
+    const char* thickness_map_path; /* NULL (default), or a .ply file that receives the part's
+                                    surface coloured by local wall thickness (a `quality`
+                                    property in mm, viridis colours from 0 to twice the largest
+                                    of the minimum wall and pin), and beside it STEM.png, its
+                                    legend. Borrowed. */
+} fabvdb_check_options;
+
+/* Fills *options with the defaults above and sets struct_size. NULL does
+ * nothing. Thread-safe. (since 0.1) */
+FABVDB_API void fabvdb_check_options_init(fabvdb_check_options* options);
+
+/* Judges whether a part will print in a process as it is, as a farm checks an
+ * order: the mesh's defects and the path repair would take, units, local wall
+ * thickness (measured on the solid's signed distance, not by rays), pins
+ * under the minimum diameter and pieces under the minimum feature, holes and
+ * channels under the minimum width, sealed cavities, overhangs for `up`, and
+ * the build volume. The report has verdict ("pass", "warn" or "fail": the
+ * worst check), process (the profile's thresholds), voxel_size,
+ * surface_vertices, checks {mesh, units, wall_thickness, small_features,
+ * holes, trapped_volumes, overhangs, build_volume (with a build volume)},
+ * each with status, message and its figures in mm with the places they
+ * concern (docs/check.md), warnings and timings. A part that fails is a
+ * finding in the report, not an error.
+ * mesh: borrowed. options: borrowed; NULL means the defaults. out: receives
+ * the report, owned by the caller.
+ * Returns FABVDB_OK; FABVDB_ERR_INVALID_ARGUMENT (NULL ctx, mesh or out, an
+ * unknown process, an option out of range, struct_size not set or from a
+ * newer header); FABVDB_ERR_IO (the profile or the heat map cannot be read or
+ * written); FABVDB_ERR_BAD_INPUT (a malformed profile, a mesh that encloses no
+ * volume; the message names the file); FABVDB_ERR_OUT_OF_BUDGET;
+ * FABVDB_ERR_OUT_OF_MEMORY; FABVDB_ERR_CANCELLED (no report and no heat map is
+ * left). Reports progress. A context is used by one thread at a time.
+ * (since 0.1) */
+FABVDB_API fabvdb_status fabvdb_mesh_check(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                           const fabvdb_check_options* options, fabvdb_report** out);
+
 #ifdef __cplusplus
 }
 #endif

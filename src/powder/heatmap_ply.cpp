@@ -42,7 +42,7 @@ std::vector<double> vertex_values(const Mesh& surface, const CavityPatches& patc
 }
 
 void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_value, double low, double high,
-                       const std::string& description, const std::string& path) {
+                       const std::string& description, const std::string& path, bool reverse_faces) {
     if (vertex_value.size() != surface.vertices.size())
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the heat map's values do not match its vertices");
     const double span = high > low ? high - low : 1.0;
@@ -58,12 +58,11 @@ void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_va
         for (uint8_t channel : viridis((vertex_value[i] - low) / span)) put(out, channel);
         put(out, float(vertex_value[i]));
     }
-    // The cavity surface faces out of the cavity; the heat map faces the powder.
     for (const Triangle& t : surface.triangles) {
         put(out, uint8_t(3));
         put(out, int32_t(t[0]));
-        put(out, int32_t(t[2]));
-        put(out, int32_t(t[1]));
+        put(out, int32_t(t[reverse_faces ? 2 : 1]));
+        put(out, int32_t(t[reverse_faces ? 1 : 2]));
     }
     AtomicOutput output(path);
     {

@@ -2,8 +2,10 @@
 //! little-endian PLY whose vertices carry the value as a float `quality`
 //! property and as viridis colours over [low, high] (clamped), as MeshLab
 //! and Blender read them. A vertex's value is the area-weighted mean over
-//! its triangles' patches. The faces face the powder (the cavity surface
-//! turned inside out). Written atomically (Error(IO) on failure, no
+//! its triangles' patches. With `reverse_faces` (the default) the faces face
+//! the powder (the cavity surface turned inside out); without, they keep the
+//! surface's own orientation (an outer surface, as `fabvdb check`'s thickness
+//! map). Written atomically (Error(IO) on failure, no
 //! partial file).
 #pragma once
 
@@ -20,6 +22,6 @@ std::vector<double> vertex_values(const Mesh& surface, const CavityPatches& patc
                                   const std::vector<double>& per_patch);
 
 void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_value, double low, double high,
-                       const std::string& description, const std::string& path);
+                       const std::string& description, const std::string& path, bool reverse_faces = true);
 
 }  // namespace fabvdb::powder

@@ -9,6 +9,8 @@ source "$(dirname "$0")/lib.sh"
 SPHERE="$SOURCE/data/sphere.obj"
 
 expect_exit 0 "$FABVDB" info "$SPHERE" --report "$WORK/info.json" --quiet
+expect_exit 0 "$FABVDB" check "$SPHERE" --fit 40mm --process fdm --build-volume 250x210x220mm \
+  --thickness-map "$WORK/walls.ply" --report "$WORK/check.json" --quiet
 expect_exit 0 "$FABVDB" repair "$SPHERE" --fit 40mm --resolution 60 -o "$WORK/repaired.stl" --report "$WORK/repair.json" --quiet
 expect_exit 0 "$FABVDB" hollow "$SPHERE" --fit 40mm --wall 3mm -o "$WORK/hollow.stl" --report "$WORK/hollow.json" --quiet
 expect_exit 0 "$FABVDB" drain "$WORK/hollow.stl" --holes 2 --patches 300 -o "$WORK/drained.stl" \
@@ -22,7 +24,7 @@ expect_exit 0 "$FABVDB" mold "$SPHERE" --fit 40mm --decomposition "$WORK/decompo
 printf 'fabvdb-job 1\ninfo "%s" --report "%s/batch-info.json"\n' "$SPHERE" "$WORK" > "$WORK/keys.job"
 expect_exit 0 "$FABVDB" batch "$WORK/keys.job" --report "$WORK/batch.json" --quiet
 
-expect_exit 0 python3 - "$WORK"/{info,repair,hollow,drain,powder-sim,decompose,mold,batch}.json <<'PY'
+expect_exit 0 python3 - "$WORK"/{info,check,repair,hollow,drain,powder-sim,decompose,mold,batch}.json <<'PY'
 import json, re, sys
 
 NAME = re.compile(r'^[a-z][a-z0-9_]*$')

@@ -135,6 +135,16 @@ TEST(HeatmapPly, WritesABinaryPlyWithViridisColoursAndValues) {
     EXPECT_EQ(back.triangles, (std::vector<fabvdb::Triangle>{{0, 2, 1}, {1, 2, 3}}));
 }
 
+TEST(HeatmapPly, FacesKeptAsGivenOnRequest) {
+    // An outer surface (fabvdb check's thickness map) keeps its orientation.
+    fabvdb::test::TempDir dir;
+    const std::string path = dir.file("outer.ply");
+    const Mesh mesh = two_triangles();
+    write_heatmap_ply(mesh, {0.0, 1.0, 2.0, 3.0, 4.0}, 0.0, 4.0, "wall thickness", path, false);
+    fabvdb::Progress progress;
+    EXPECT_EQ(fabvdb::io::read_mesh(path, progress).triangles, mesh.triangles);
+}
+
 TEST(HeatmapPly, AnEmptyRangeStillColours) {
     // low = high: the span becomes 1, so the value at low is viridis(0) and one above it viridis(1).
     fabvdb::test::TempDir dir;

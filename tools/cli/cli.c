@@ -150,6 +150,7 @@ const cli_exit_doc cli_exit_docs[] = {
     {CLI_EXIT_BAD_INPUT, "bad input: a file is missing, unreadable or malformed (the message names the file and the defect)"},
     {CLI_EXIT_BUDGET, "resource budget exceeded (--max-memory; the message proposes what fits)"},
     {CLI_EXIT_INTERNAL, "internal error (a bug: please report it with the input)"},
+    {CLI_EXIT_VERDICT, "check only: the verdict reached --fail-on (the part will not print as it is; the output says why)"},
     {CLI_EXIT_CANCELLED, "cancelled (Ctrl-C, SIGTERM); no output is left behind"},
 };
 const size_t cli_exit_doc_count = sizeof(cli_exit_docs) / sizeof(cli_exit_docs[0]);
@@ -381,7 +382,7 @@ static int set_value(cli_run* run, int index, const char* text, int given) {
     return 0;
 }
 
-const char* const cli_alternatives[][2] = {{"--voxel", "--resolution"}, {"--scale", "--fit"}};
+const char* const cli_alternatives[][2] = {{"--voxel", "--resolution"}, {"--scale", "--fit"}, {"--up", "--orientation"}};
 const size_t cli_alternative_count = sizeof(cli_alternatives) / sizeof(cli_alternatives[0]);
 
 /* The rule of cli_alternatives. Returns 0, or the usage error after printing it. */

@@ -17,6 +17,7 @@ enum {
     CLI_EXIT_BAD_INPUT = 2,
     CLI_EXIT_BUDGET = 3,
     CLI_EXIT_INTERNAL = 4,
+    CLI_EXIT_VERDICT = 5, /* `check`: the verdict reached --fail-on */
     CLI_EXIT_CANCELLED = 130
 };
 

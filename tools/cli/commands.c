@@ -7,6 +7,7 @@
 
 const cli_command* const fabvdb_commands[] = {
     &cmd_info,
+    &cmd_check,
     &cmd_repair,
     &cmd_hollow,
     &cmd_drain,

@@ -7,6 +7,7 @@
 #include "cli.h"
 
 extern const cli_command cmd_info;
+extern const cli_command cmd_check;
 extern const cli_command cmd_hollow;
 extern const cli_command cmd_decompose;
 extern const cli_command cmd_mold;

@@ -1,0 +1,160 @@
+// check_part on parts whose answer is known by construction, each check on
+// its pass and its fail side: plates thinner and thicker than the resin
+// minimum (the thinnest figure within half a voxel of the plate, no thin
+// region on a thick plate's edges), a pin of known diameter on a base, a
+// square channel of known width through a block, a sphere with a sealed
+// cavity (its volume against the construction's), the same part in mm and
+// in inches, overhangs of a floating box, the build volume, and the heat map
+// files. Expected figures come from the shapes' dimensions.
+#include "check/check_part.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/shapes.h"
+#include "support/tube.h"
+#include "support/temp_files.h"
+
+namespace fabvdb::check {
+namespace {
+
+nlohmann::json run(const Mesh& mesh, const std::string& process = "sla", double voxel = 0.0,
+                   const Vec3& up = {0, 0, 1}, const Vec3& build = {0, 0, 0}, const std::string& map = "") {
+    CheckOptions options;
+    options.profile = builtin_profile(process);
+    options.voxel_size = voxel;
+    options.up = up;
+    options.build_volume = build;
+    options.thickness_map = map;
+    Progress progress;
+    return check_part(mesh, options, progress);
+}
+
+std::string status(const nlohmann::json& report, const char* check) {
+    return report["checks"][check]["status"].get<std::string>();
+}
+
+Mesh scaled(Mesh mesh, double factor) {
+    for (Vec3& p : mesh.vertices)
+        for (double& c : p) c *= factor;
+    return mesh;
+}
+
+TEST(CheckPart, ThinAndThickPlates) {
+    const double voxel = 0.08;
+    const nlohmann::json thin = run(test::make_box({0, 0, 0}, {20, 15, 0.3}), "sla", voxel);
+    EXPECT_EQ(status(thin, "wall_thickness"), "fail");
+    EXPECT_EQ(thin["verdict"], "fail");
+    EXPECT_NEAR(thin["checks"]["wall_thickness"]["min_thickness"].get<double>(), 0.3, 0.5 * voxel);
+    // The whole plate is thin: both faces, about 2·20·15 mm².
+    EXPECT_GT(thin["checks"]["wall_thickness"]["thin_area"].get<double>(), 0.9 * 600.0);
+
+    const nlohmann::json thick = run(test::make_box({0, 0, 0}, {20, 15, 1.5}), "sla", voxel);
+    EXPECT_EQ(status(thick, "wall_thickness"), "pass") << thick["checks"]["wall_thickness"].dump();
+    EXPECT_EQ(thick["checks"]["wall_thickness"]["region_count"], 0);
+    EXPECT_EQ(status(thick, "mesh"), "pass");
+    EXPECT_EQ(thick["checks"]["mesh"]["repair_path"], "none");
+    EXPECT_EQ(status(thick, "units"), "pass");
+    EXPECT_EQ(status(thick, "trapped_volumes"), "pass");
+    EXPECT_EQ(status(thick, "holes"), "pass");
+    EXPECT_EQ(status(thick, "small_features"), "pass");
+    EXPECT_EQ(thick["verdict"], "pass");
+
+    // Between the minimum and the margin above it: a warning.
+    const nlohmann::json close = run(test::make_box({0, 0, 0}, {20, 15, 0.58}), "sla", voxel);
+    EXPECT_EQ(status(close, "wall_thickness"), "warn") << close["checks"]["wall_thickness"].dump();
+}
+
+TEST(CheckPart, PinOfKnownDiameter) {
+    const double voxel = 0.06;
+    const Mesh base = test::make_box({-5, -5, -2}, {5, 5, 0.5});
+    Mesh thin_pin = test::make_tube(0.0, 0.15, 4.0, 64);  // 0.3 mm across, under the 0.5 mm minimum
+    const nlohmann::json thin = run(test::merged(base, thin_pin), "sla", voxel);
+    EXPECT_EQ(status(thin, "small_features"), "fail") << thin["checks"]["small_features"].dump();
+    ASSERT_GE(thin["checks"]["small_features"]["pins"].size(), 1u);
+    const nlohmann::json& pin = thin["checks"]["small_features"]["pins"][0];
+    EXPECT_NEAR(pin["diameter"].get<double>(), 0.3, 0.5 * voxel);
+    EXPECT_NEAR(pin["center"][0].get<double>(), 0.0, 0.3);
+    EXPECT_NEAR(pin["center"][1].get<double>(), 0.0, 0.3);
+
+    const Mesh thick_pin = test::make_tube(0.0, 0.5, 4.0, 64);  // 1 mm across
+    const nlohmann::json thick = run(test::merged(base, thick_pin), "sla", voxel);
+    EXPECT_EQ(status(thick, "small_features"), "pass") << thick["checks"]["small_features"].dump();
+}
+
+TEST(CheckPart, ChannelOfKnownWidth) {
+    const double voxel = 0.05;
+    // A block 6 x 6 x 8 with a square channel `w` wide along z, made of four
+    // walls around it (overlapping shells: the solid is their union).
+    const auto block = [](double w) {
+        const double a = 3.0 - w / 2, b = 3.0 + w / 2;
+        Mesh m = test::make_box({0, 0, 0}, {a, 6, 8});
+        m = test::merged(m, test::make_box({b, 0, 0}, {6, 6, 8}));
+        m = test::merged(m, test::make_box({0, 0, 0}, {6, a, 8}));
+        return test::merged(m, test::make_box({0, b, 0}, {6, 6, 8}));
+    };
+    const nlohmann::json narrow = run(block(0.3), "sla", voxel);
+    EXPECT_EQ(status(narrow, "holes"), "fail") << narrow["checks"]["holes"].dump();
+    EXPECT_NEAR(narrow["checks"]["holes"]["min_diameter"].get<double>(), 0.3, 0.5 * voxel);
+    const nlohmann::json wide = run(block(1.0), "sla", voxel);
+    EXPECT_EQ(status(wide, "holes"), "pass") << wide["checks"]["holes"].dump();
+}
+
+TEST(CheckPart, SphereWithASealedCavity) {
+    const Mesh hollow = test::merged(test::make_sphere({0, 0, 0}, 10.0, 4), test::flipped(test::make_sphere({0, 0, 0}, 6.0, 4)));
+    const double cavity = -test::mesh_volume(test::flipped(test::make_sphere({0, 0, 0}, 6.0, 4)));
+    const nlohmann::json resin = run(hollow, "sla", 0.2);
+    EXPECT_EQ(status(resin, "trapped_volumes"), "fail");
+    ASSERT_EQ(resin["checks"]["trapped_volumes"]["cavities"].size(), 1u);
+    EXPECT_NEAR(resin["checks"]["trapped_volumes"]["cavities"][0]["volume"].get<double>(), cavity, 0.03 * cavity);
+    EXPECT_NEAR(resin["checks"]["trapped_volumes"]["cavities"][0]["center"][0].get<double>(), 0.0, 0.2);
+    const nlohmann::json fdm = run(hollow, "fdm", 0.2);
+    EXPECT_EQ(status(fdm, "trapped_volumes"), "pass");
+    EXPECT_EQ(fdm["checks"]["trapped_volumes"]["cavities"].size(), 1u);
+    const nlohmann::json solid = run(test::make_sphere({0, 0, 0}, 10.0, 4), "sla", 0.2);
+    EXPECT_EQ(status(solid, "trapped_volumes"), "pass");
+}
+
+TEST(CheckPart, SamePartInMillimetresAndInches) {
+    const Mesh part = test::make_box({0, 0, 0}, {50, 30, 20});
+    const nlohmann::json mm = run(part, "fdm");
+    EXPECT_EQ(status(mm, "units"), "pass");
+    EXPECT_EQ(mm["verdict"], "pass") << mm.dump();
+    const nlohmann::json inches = run(scaled(part, 1.0 / 25.4), "fdm");
+    EXPECT_EQ(status(inches, "units"), "warn");
+    EXPECT_EQ(inches["checks"]["units"]["suggested_scale"], 25.4);
+    EXPECT_EQ(inches["checks"]["units"]["readings"][0]["unit"], "in");
+}
+
+TEST(CheckPart, OverhangsAndBuildVolume) {
+    const Mesh two = test::merged(test::make_box({0, 0, 0}, {10, 10, 10}), test::make_box({20, 0, 5}, {30, 10, 10}));
+    const nlohmann::json fdm = run(two, "fdm", 0.25);
+    EXPECT_EQ(status(fdm, "overhangs"), "warn");
+    EXPECT_NEAR(fdm["checks"]["overhangs"]["area"].get<double>(), 100.0, 5.0);
+    const nlohmann::json powder = run(two, "powder", 0.25);
+    EXPECT_EQ(status(powder, "overhangs"), "pass");
+
+    const Mesh box = test::make_box({0, 0, 0}, {50, 30, 20});
+    EXPECT_EQ(status(run(box, "fdm", 0.5, {0, 0, 1}, {100, 100, 100}), "build_volume"), "pass");
+    EXPECT_EQ(status(run(box, "fdm", 0.5, {0, 0, 1}, {30, 60, 50}), "build_volume"), "warn");
+    EXPECT_EQ(status(run(box, "fdm", 0.5, {0, 0, 1}, {40, 40, 40}), "build_volume"), "fail");
+    // Standing on its 30 x 20 side (up +x), the part is 50 tall.
+    const nlohmann::json standing = run(box, "fdm", 0.5, {1, 0, 0}, {100, 100, 100});
+    EXPECT_NEAR(standing["checks"]["build_volume"]["size"][2].get<double>(), 50.0, 1e-9);
+    EXPECT_FALSE(run(box, "fdm", 0.5)["checks"].contains("build_volume"));
+}
+
+TEST(CheckPart, ThicknessMapFiles) {
+    test::TempDir dir;
+    const std::string path = dir.file("walls.ply");
+    const nlohmann::json report = run(test::make_box({0, 0, 0}, {10, 10, 1}), "sla", 0.1, {0, 0, 1}, {0, 0, 0}, path);
+    const std::string ply = test::read_bytes(path);
+    EXPECT_EQ(ply.rfind("ply\n", 0), 0u);
+    EXPECT_NE(ply.find("property float quality"), std::string::npos);
+    EXPECT_FALSE(test::read_bytes(dir.file("walls.png")).empty());
+    EXPECT_EQ(report["checks"]["wall_thickness"]["map"]["legend"], dir.file("walls.png"));
+}
+
+}  // namespace
+}  // namespace fabvdb::check
