@@ -23,8 +23,10 @@ ShellPrisms shell_prisms(const openvdb::FloatGrid& grid, const std::vector<Vec3>
     std::atomic<size_t> done{0};
     tbb::parallel_for(tbb::blocked_range<size_t>(0, outer_vertices.size(), 1024), [&](const tbb::blocked_range<size_t>& range) {
         if (progress.cancelled()) return;
+        // The sampler holds its accessor by reference: the accessor is named.
+        const openvdb::FloatGrid::ConstAccessor accessor = grid.getConstAccessor();
         openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler> sampler(
-            grid.getConstAccessor(), grid.transform());
+            accessor, grid.transform());
         const auto phi = [&](const openvdb::Vec3d& p) { return double(sampler.wsSample(p)); };
         for (size_t i = range.begin(); i != range.end(); ++i) {
             openvdb::Vec3d p(outer_vertices[i][0], outer_vertices[i][1], outer_vertices[i][2]);
