@@ -10,7 +10,7 @@ Meshes are numpy arrays in and out::
     shell.write("shell.stl")
 
 Every command of the ``fabvdb`` tool is a function with its options as
-keyword arguments: inspect, repair, hollow, drain, powder_sim, decompose,
+keyword arguments: inspect, check, repair, hollow, drain, powder_sim, decompose,
 mold (and to_volume for level sets). Decomposition is the interactive
 session. Errors are fabvdb.Error subclasses; Ctrl-C cancels a running call.
 See docs/python.md.
@@ -18,8 +18,8 @@ See docs/python.md.
 from . import _fabvdb
 from ._fabvdb import (BadInputError, CancelledError, Context, Error, FileError, InternalError, InvalidArgumentError,
                       Mesh, NotFoundError, OutOfBudgetError, OutOfMemoryError, Volume)
-from ._commands import (DecomposeResult, DrainResult, HeatMap, MoldResult, Result, VolumeResult, decompose, drain,
-                        hollow, inspect, mold, powder_sim, read, repair, to_volume, write)
+from ._commands import (DecomposeResult, DrainResult, HeatMap, MoldResult, Result, VolumeResult, check, decompose,
+                        drain, hollow, inspect, mold, powder_sim, read, repair, to_volume, write)
 from ._session import Decomposition
 
 __version__ = _fabvdb.version
@@ -59,5 +59,5 @@ Volume.to_mesh = _volume_to_mesh
 __all__ = ["BadInputError", "CancelledError", "Context", "DecomposeResult", "Decomposition", "DrainResult",
            "Error", "FileError", "HeatMap", "InternalError", "InvalidArgumentError", "Mesh", "MoldResult",
            "NotFoundError", "OutOfBudgetError", "OutOfMemoryError", "Result", "Volume", "VolumeResult",
-           "decompose", "drain", "hollow", "inspect", "mold", "powder_sim", "read", "repair", "to_volume",
+           "check", "decompose", "drain", "hollow", "inspect", "mold", "powder_sim", "read", "repair", "to_volume",
            "write"]

@@ -141,6 +141,14 @@ def inspect(mesh: MeshLike, *, report: Optional[Path] = None, progress: Progress
             context: Optional[Context] = None, threads: int = 0, max_memory: Optional[Size] = None) -> dict:
     """Counts, topology, defects, volume, genus, bbox (fabvdb info; docs/info.md). Defects are data."""
 
+def check(mesh: MeshLike, *, process: Union[str, Path] = "sla", up: Union[str, Sequence[float]] = "+z",
+          build_volume: Union[None, str, Sequence[Length]] = None, voxel: Optional[Length] = None,
+          resolution: int = 400, thickness_map: Optional[Path] = None, report: Optional[Path] = None,
+          progress: Progress = None, context: Optional[Context] = None, threads: int = 0,
+          max_memory: Optional[Size] = None) -> dict:
+    """Will it print in this process as it is (fabvdb check; docs/check.md): verdict "pass", "warn" or "fail"
+    and every check with its figures in mm. A part that fails is a finding, never an error."""
+
 def repair(mesh: MeshLike, *, voxel: Optional[Length] = None, resolution: int = 400, adaptivity: float = 0.0,
            volumetric: bool = False, no_snap: bool = False, min_shell_volume: float = 0.0,
            thicken: Optional[Length] = None, output: Optional[Path] = None, report: Union[bool, Path] = True,

@@ -15,6 +15,7 @@ works, so calls in several threads run at once.
 """
 import json
 import os
+import re
 import shutil
 import tempfile
 from typing import NamedTuple, Optional
@@ -142,6 +143,54 @@ def inspect(mesh, *, report=None, progress=None, context=None, threads=0, max_me
     Defects are data, never errors. report: also write it to this JSON file."""
     context = _inputs.context_for(context, threads, max_memory)
     result = _inputs.report(_fabvdb._inspect(context, _mesh(mesh, context, progress), progress))
+    _write_report(result, report)
+    return result
+
+
+_AXES = {"+x": (1, 0, 0), "-x": (-1, 0, 0), "+y": (0, 1, 0), "-y": (0, -1, 0), "+z": (0, 0, 1), "-z": (0, 0, -1)}
+
+
+def check(mesh, *, process="sla", up="+z", build_volume=None, voxel=None, resolution=400, thickness_map=None,
+          report=None, progress=None, context=None, threads=0, max_memory=None):
+    """Will it print in this process as it is (fabvdb check): the verdict and every check, as a dict.
+
+    process: "sla" (resin), "powder" (SLS, MJF, binder jetting), "fdm", or a JSON profile's path (docs/check.md).
+    up: the build direction, "+x" ... "-z" or three numbers. build_volume: the printer's, three lengths or
+    "250x210x220mm" (None: not checked). voxel: a length (default: the process' minimum wall / 4, no finer
+    than the longest side / resolution). thickness_map: a .ply path that receives the surface coloured by
+    local wall thickness, with its legend beside it. Keys (docs/check.md): verdict ("pass", "warn" or
+    "fail"), process, voxel_size, checks {mesh, units, wall_thickness, small_features, holes,
+    trapped_volumes, overhangs, build_volume}, each with status, message and figures in mm. A part that
+    fails is a finding, never an error. report: also write it to this JSON file."""
+    context = _inputs.context_for(context, threads, max_memory)
+    handle = _mesh(mesh, context, progress)
+    options = {"process": _inputs.path_text(process, "process"),
+               "resolution": _units.count(resolution, "resolution", allow_auto=False)}
+    direction = _AXES.get(up) if isinstance(up, str) else up
+    if direction is None:
+        raise InvalidArgumentError(f"up: expected one of {', '.join(_AXES)} or three numbers, got {up!r}")
+    options["up"] = np.asarray(direction, dtype=float).reshape(1, 3)
+    if build_volume is not None:
+        if isinstance(build_volume, str):
+            # "250x210x220mm": the unit after the last side holds for all three.
+            match = re.fullmatch(r"\s*([0-9.]+)\s*x\s*([0-9.]+)\s*x\s*([0-9.]+)\s*([a-z]*)\s*", build_volume.lower())
+            sides = [side + match.group(4) for side in match.groups()[:3]] if match else []
+        else:
+            sides = list(build_volume)
+        if len(sides) != 3:
+            raise InvalidArgumentError(f"build_volume: expected three lengths such as '250x210x220mm', "
+                                       f"got {build_volume!r}")
+        sizes = [_units.length(side, "build_volume", 0.0) for side in sides]
+        if not all(size > 0 for size in sizes):
+            raise InvalidArgumentError("build_volume: every side must be positive")
+        options["build_volume"] = np.asarray(sizes, dtype=float).reshape(1, 3)
+    if voxel is not None:
+        options["voxel_size"] = _units.length(voxel, "voxel", _inputs.diagonal(handle))
+        if not options["voxel_size"] > 0:
+            raise InvalidArgumentError("voxel must be positive")
+    if thickness_map is not None:
+        options["thickness_map_path"] = _inputs.path_text(thickness_map, "thickness_map")
+    result = _inputs.report(_fabvdb._check(context, handle, options, progress))
     _write_report(result, report)
     return result
 

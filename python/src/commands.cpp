@@ -1,5 +1,5 @@
 // commands.cpp — the library's operations for the Python layer: inspect,
-// repair, level sets, hollow, drain, powder simulation, decompose, mold. Each
+// check, repair, level sets, hollow, drain, powder simulation, decompose, mold. Each
 // takes a Context, its inputs and its options as a dict keyed by the C
 // struct's field names (the Python layer maps the CLI's names and units onto
 // them), and returns the result and the report's JSON text. An unknown option
@@ -137,6 +137,28 @@ void bind_commands(py::module_& m) {
     m.def("_inspect", [](Context& context, const Mesh& mesh, const py::object& progress) {
         fabvdb_report* report = nullptr;
         run(context, progress, [&](fabvdb_ctx* ctx) { return fabvdb_mesh_inspect(ctx, mesh.handle, &report); });
+        return take_report(report);
+    });
+
+    m.def("_check", [](Context& context, const Mesh& mesh, const py::dict& options, const py::object& progress) {
+        fabvdb_check_options o;
+        fabvdb_check_options_init(&o);
+        Fields f(options, "check");
+        std::string process, thickness_map;
+        std::vector<double> up, build_volume;
+        f.get("process", process);
+        f.rows("up", up);
+        f.rows("build_volume", build_volume);
+        f.get("voxel_size", o.voxel_size);
+        f.get("resolution", o.resolution);
+        f.get("thickness_map_path", thickness_map);
+        f.done();
+        if (!process.empty()) o.process = process.c_str();
+        if (up.size() == 3) std::copy(up.begin(), up.end(), o.up);
+        if (build_volume.size() == 3) std::copy(build_volume.begin(), build_volume.end(), o.build_volume);
+        o.thickness_map_path = thickness_map.empty() ? nullptr : thickness_map.c_str();
+        fabvdb_report* report = nullptr;
+        run(context, progress, [&](fabvdb_ctx* ctx) { return fabvdb_mesh_check(ctx, mesh.handle, &o, &report); });
         return take_report(report);
     });
 

@@ -25,6 +25,33 @@ def test_inspect_finds_a_hole(box):
     assert not report["closed"] and report["boundary_loops"] == 1 and report["volume"] is None
 
 
+def test_check_finds_a_plate_too_thin_for_resin(tmp_path):
+    # A plate 0.3 mm thick, under resin's 0.5 mm minimum wall; a 20 mm
+    # block is nowhere thin. The figures come from the shapes' sides.
+    v, t = box_arrays(1.0)
+    plate = fabvdb.Mesh(v * np.array([30.0, 30.0, 0.3]), t)
+    report = fabvdb.check(plate, process="sla", report=tmp_path / "r.json")
+    wall = report["checks"]["wall_thickness"]
+    assert report["verdict"] == "fail" and wall["status"] == "fail"
+    assert json.loads((tmp_path / "r.json").read_text())["verdict"] == "fail"
+    block = fabvdb.check(fabvdb.Mesh(v * 20.0, t), process="sla", build_volume="25x25x25mm")
+    assert block["checks"]["wall_thickness"]["status"] == "pass"
+    assert block["checks"]["build_volume"]["status"] == "pass"
+    small = fabvdb.check(fabvdb.Mesh(v * 20.0, t), process="sla", build_volume=(10, 10, "1cm"))
+    assert small["checks"]["build_volume"]["status"] == "fail"
+
+
+def test_check_refuses_bad_options():
+    v, t = box_arrays(20.0)
+    block = fabvdb.Mesh(v, t)
+    with pytest.raises(fabvdb.InvalidArgumentError):
+        fabvdb.check(block, up="sideways")
+    with pytest.raises(fabvdb.InvalidArgumentError):
+        fabvdb.check(block, build_volume="250x210")
+    with pytest.raises(fabvdb.Error):
+        fabvdb.check(block, process="no-such-process")
+
+
 def test_repair_closes_a_hole():
     v, t = box_arrays()
     mesh, report = fabvdb.repair(fabvdb.Mesh(v, t[2:]), resolution=60)
