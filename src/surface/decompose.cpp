@@ -71,6 +71,7 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
     report["parts"] = nlohmann::json::array();
     const double depth_bound = settings.decomposition.max_undercut_depth / result.shell.unit_scale;
     double deepest = 0;
+    Vec3 deepest_at{0, 0, 0};
     for (size_t p = 0; p < d.parts.size(); ++p) {
         double area = 0;
         for (size_t i = 0; i < d.parts[p].surface.size(); ++i)
@@ -79,14 +80,19 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
         const UndercutDepth undercut = undercut_depth(result.shell, d.part_of_triangle, int(p), direction,
                                                       undercut_line_spacing(result.shell),
                                                       undercut_reach(result.shell, settings.decomposition));
-        deepest = std::max(deepest, undercut.depth);
+        if (undercut.depth > deepest) {
+            deepest = undercut.depth;
+            deepest_at = undercut.at;
+        }
         report["parts"].push_back({{"id", p},
                                    {"parting_direction", direction},
                                    {"moldability_energy", d.parts[p].energy.total},
                                    {"area", area / (result.shell.unit_scale * result.shell.unit_scale)},
-                                   {"undercut_depth", undercut.depth}});
+                                   {"undercut_depth", undercut.depth},
+                                   {"undercut_at", undercut.at}});
     }
     report["undercut_depth"] = deepest;
+    report["undercut_at"] = deepest_at;
     report["timings"] = timings;
     report["timings"]["precompute_per_direction"] =
         timings["precompute_directions"] / double(result.terms.directions.directions.size());
@@ -96,10 +102,12 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
         report["warnings"].push_back("the part is thinner than twice the shell thickness everywhere (one thin "
                                      "feature): its parts are cast solid, as with --solid");
     if (deepest > depth_bound)
-        report["warnings"].push_back("an undercut " + std::to_string(deepest) + " mm deep along its part's parting "
-                                     "direction is over the bound " + std::to_string(depth_bound) +
-                                     " mm: the mold fills or trims it, leaving the input up to about half of it "
-                                     "from the cast part");
+        report["warnings"].push_back("an undercut " + std::to_string(deepest) + " mm deep at (" +
+                                     std::to_string(deepest_at[0]) + ", " + std::to_string(deepest_at[1]) + ", " +
+                                     std::to_string(deepest_at[2]) + ") along its part's parting direction is over "
+                                     "the bound " + std::to_string(depth_bound) + " mm with any part count tried: "
+                                     "the mold fills it, leaving the input up to that deep inside the cast part "
+                                     "(a cut there, --edits, may avoid it)");
     if (!(energy < settings.decomposition.gamma))
         report["warnings"].push_back("the total moldability energy " + std::to_string(energy) +
                                      " is not under gamma " + std::to_string(settings.decomposition.gamma));

@@ -93,17 +93,26 @@ UndercutDepth undercut_depth(const Shell& shell, const std::vector<int>& part_of
         }
     }
 
-    // What the sweep makes of each line: filled from its lowest to its highest
-    // own crossing (lo > hi: the line misses the part).
+    // What the sweep makes of each line: filled from the lowest to the highest
+    // point of the part on it (lo > hi: the line misses the part). The part
+    // holds ω under its surface (its prisms), so where the line's lowest own
+    // crossing leaves the part (another part's surface, or none, below it)
+    // the part's material starts ω lower, and alike above a highest own
+    // crossing that enters it.
     std::vector<double> lo_of(lines.size(), 1e300), hi_of(lines.size(), -1e300);
     for (size_t i = 0; i < lines.size(); ++i) {
         std::vector<Crossing>& line = lines[i];
         std::sort(line.begin(), line.end(), [](const Crossing& a, const Crossing& b) { return a.height < b.height; });
+        const Crossing* lowest = nullptr;
+        const Crossing* highest = nullptr;
         for (const Crossing& c : line) {
             if (!c.own) continue;
-            lo_of[i] = std::min(lo_of[i], c.height);
-            hi_of[i] = std::max(hi_of[i], c.height);
+            if (!lowest) lowest = &c;
+            highest = &c;
         }
+        if (!lowest) continue;
+        lo_of[i] = lowest->height - (lowest->leaving ? shell.thickness : 0.0);
+        hi_of[i] = highest->height + (highest->leaving ? 0.0 : shell.thickness);
     }
     // How deep the filled lines bury the point at height h on line (c, r):
     // to the line's ends, or across to the nearest line that is not filled

@@ -2,8 +2,9 @@
 //! how deep the mold's sweep buries the part's outer surface where it fills a
 //! gap. A line along the direction that leaves the part's outer surface and
 //! enters it again, with no other part's outer surface in between, crosses a
-//! gap; the sweep fills each line from its lowest to its highest crossing of
-//! the part, and the depth of a gap's end is its distance to the nearest point
+//! gap; the sweep fills each line from the lowest to the highest point of the
+//! part on it (ω under a lowest crossing that leaves the part, or over a
+//! highest one that enters it: the part's prisms), and the depth of a gap's end is its distance to the nearest point
 //! so filled that is not: along its own line (to the line's ends) or across
 //! to the nearest line not filled at its height. The part's undercut depth is
 //! the deepest such end, up to `reach`. The sweep fills such a gap or, when it

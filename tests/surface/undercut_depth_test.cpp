@@ -6,7 +6,8 @@
 //! across the slabs, none when the upper slab is another part or another
 //! part lies in the gap, and the reach capping the depth. Measured on the
 //! input the shell holds: a gap S_low smoothed away is still found, the same
-//! with the input stored inside out.
+//! with the input stored inside out. A part holds its shell ω deep under a
+//! surface with no own surface below it: a gap over it buries that deep.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,6 +56,24 @@ TEST(UndercutDepth, NarrowWallAboveIsBuriedOnlyHalfItsWidth) {
     const double depth = undercut_depth(shell, parts(shell, 0, 0), 0, {0, 0, 1}, spacing, far).depth;
     EXPECT_GT(depth, 0.5 - spacing);
     EXPECT_LT(depth, 0.5 + spacing);
+}
+
+TEST(UndercutDepth, PartHoldsItsShellUnderALowestCrossingThatLeavesIt) {
+    // The lower slab's bottom belongs to part 1, so part 0's lowest crossing
+    // on each line leaves it at z = 2; part 0 still holds ω = 3 under it. The
+    // fill [-1, 5.5] buries z = 2 by 3 (to the shell's inner side), not by 0.
+    const double omega = 3;
+    const Shell shell =
+        fabvdb::test::shell_of(merged(make_box({0, 0, 0}, {10, 10, 2}), make_box({0, 0, 5}, {10, 10, 5.5})), omega);
+    std::vector<int> part(shell.triangle_count(), 0);
+    for (size_t t = 0; t < shell.triangle_count(); ++t) {
+        bool bottom = true;
+        for (uint32_t v : shell.outer.triangles[t]) bottom = bottom && shell.outer.vertices[v][2] == 0;
+        if (bottom) part[t] = 1;
+    }
+    EXPECT_NEAR(undercut_depth(shell, part, 0, {0, 0, 1}, spacing, far).depth, omega, 1e-9);
+    // Turned over, the same part's highest crossing enters it: the same depth.
+    EXPECT_NEAR(undercut_depth(shell, part, 0, {0, 0, -1}, spacing, far).depth, omega, 1e-9);
 }
 
 TEST(UndercutDepth, NoGapAcrossTheSlabs) {
