@@ -181,17 +181,7 @@ static void clear_progress_line(void) {
 
 int cli_fail(const cli_run* run, fabvdb_status status) {
     clear_progress_line();
-    const char* message = fabvdb_last_error(run->ctx);
-    /* The library calls a mesh it was handed by a generic name, not by its
-       file: put the input file's path in its place. */
-    static const char* const generic[] = {"mesh: ", "input: ", "part: ", "volume: "};
-    const char* input = run->positional_count > 0 ? run->positional[0] : NULL;
-    for (size_t i = 0; input && i < sizeof(generic) / sizeof(generic[0]); ++i)
-        if (strncmp(message, generic[i], strlen(generic[i])) == 0) {
-            status_print(run->command->name, status, "%s: %s", input, message + strlen(generic[i]));
-            return cli_exit_code(status);
-        }
-    status_print(run->command->name, status, "%s", message);
+    status_print(run->command->name, status, "%s", fabvdb_last_error(run->ctx));
     return cli_exit_code(status);
 }
 
