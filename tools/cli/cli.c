@@ -242,6 +242,24 @@ double cli_mesh_diagonal(const fabvdb_mesh* mesh) {
     return sqrt(sum);
 }
 
+int cli_voxel_size(const cli_run* run, const fabvdb_mesh* mesh, double* voxel) {
+    *voxel = 0.0;
+    if (cli_get(run, "--voxel")->set) {
+        *voxel = cli_length_mm(run, "--voxel", cli_mesh_diagonal(mesh));
+        if (!(*voxel > 0.0)) return cli_usage_error(run, "--voxel must be a positive length");
+    }
+    if (cli_option_named(run->command, "--resolution", strlen("--resolution"), 0) && cli_get(run, "--resolution")->set) {
+        const double resolution = cli_get(run, "--resolution")->number;
+        if (!(resolution >= 8.0)) return cli_usage_error(run, "--resolution must be >= 8");
+        double lo[3], hi[3], longest = 0.0;
+        mesh_bounds(mesh, lo, hi);
+        for (int k = 0; k < 3; ++k)
+            if (hi[k] - lo[k] > longest) longest = hi[k] - lo[k];
+        *voxel = longest / resolution;
+    }
+    return CLI_EXIT_OK;
+}
+
 int cli_is_level_set_path(const char* path) {
     const size_t n = strlen(path);
     return n >= 4 && strcasecmp(path + n - 4, ".vdb") == 0;
