@@ -21,9 +21,9 @@ echo "== place and drill two drain holes in the hollow part"
 $fabvdb drain "$out/spot_hollow.stl" --holes 2 -o "$out/spot_drained.stl" --heatmap "$out/drainability.ply" \
   --report "$out/drain.json"
 echo "== check with the reference powder simulation: the recommended cleaning routine, then random turns"
-$fabvdb powder-sim "$out/spot_drained.stl" --holes "$out/drain.json" --routine "$out/drain.json" \
+$fabvdb powder-sim "$out/spot_drained.stl" --holes-from "$out/drain.json" --routine "$out/drain.json" \
   --report "$out/powder_sim.json"
-$fabvdb powder-sim "$out/spot_drained.stl" --holes "$out/drain.json" --report "$out/powder_sim_random.json"
+$fabvdb powder-sim "$out/spot_drained.stl" --holes-from "$out/drain.json" --report "$out/powder_sim_random.json"
 echo "== decompose into two-piece-moldable parts and generate the molds"
 $fabvdb mold data/spot.obj --fit 80mm -o "$out/spot_molds" --report "$out/mold.json"
 echo

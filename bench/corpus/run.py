@@ -417,7 +417,7 @@ def process_model(row, args, runner, with_mold):
         cell("drain", v, why, r)
         cell("powder-sim", "n/a", "no drained part", None)
     if drained and "powder-sim" in wanted:
-        r = runner.run([fabvdb, "powder-sim", out, "--holes", "drain.json", "--report", "sim.json"], work,
+        r = runner.run([fabvdb, "powder-sim", out, "--holes-from", "drain.json", "--report", "sim.json"], work,
                        "powder-sim")
         if r["exit"] == 0:
             try:

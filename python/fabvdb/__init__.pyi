@@ -182,7 +182,7 @@ def drain(mesh: MeshLike, *, wall: Length = "3mm", holes: Union[str, int] = "aut
     """Places and drills drain holes so trapped powder escapes (fabvdb drain; docs/drain.md), with the
     cleaning routine and, with heatmap, the drainability heat map of the cavity."""
 
-def powder_sim(mesh: MeshLike, *, holes: Union[Path, dict, list, DrainResult],
+def powder_sim(mesh: MeshLike, *, holes_from: Union[Path, dict, list, DrainResult],
                orientations: Union[str, Path, npt.ArrayLike] = "all", turns: Optional[int] = None,
                seed: Optional[int] = None, repose: Angle = "35deg", voxel: Optional[Length] = None,
                routine: Union[None, Path, dict, list, DrainResult] = None, report: Optional[Path] = None,

@@ -393,14 +393,14 @@ def drain(mesh, *, wall="3mm", holes="auto", hole_diameter="4mm", repose="35deg"
                        heat)
 
 
-def powder_sim(mesh, *, holes, orientations="all", turns=None, seed=None, repose="35deg", voxel=None, routine=None,
+def powder_sim(mesh, *, holes_from, orientations="all", turns=None, seed=None, repose="35deg", voxel=None, routine=None,
                report=None, progress=None, context=None, threads=0, max_memory=None):
     """The reference powder simulation (fabvdb powder-sim), independent of drain()'s model.
 
     Fills the cavity of a hollow part with powder, opens the holes, and runs sand-pile rules through an
     operator's routine: first as printed (-z down), then turns-1 (default 10 turns) turns drawn with `seed`
     (default 1) from `orientations`, or exactly `routine` (a drain report's routine[], a DrainResult, or a
-    list of gravities). holes: a drain report (path, dict or DrainResult) or a list of
+    list of gravities). holes_from: a drain report (path, dict or DrainResult) or a list of
     {center, axis, diameter, depth}. voxel: sand-pile cell (default diagonal/150, at most a quarter hole).
     Returns the report as a dict: initial_volume, residual_volume, residual_fraction,
     residual_volume_after_turn, routine, voxel_size, timings (docs/powder-sim.md)."""
@@ -421,7 +421,7 @@ def powder_sim(mesh, *, holes, orientations="all", turns=None, seed=None, repose
         options["voxel_size"] = _units.length(voxel, "voxel", _inputs.diagonal(mesh))
         if not options["voxel_size"] > 0:
             raise InvalidArgumentError("voxel must be a positive length")
-    holes_json = _inputs.json_text(holes, "holes", wrap_list="holes")
+    holes_json = _inputs.json_text(holes_from, "holes", wrap_list="holes")
     result = _inputs.report(_fabvdb._powder_simulate(context, mesh, holes_json, options, progress))
     _write_report(result, report)
     return result

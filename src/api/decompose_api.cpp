@@ -95,7 +95,8 @@ fabvdb_status fabvdb_mesh_decompose(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, co
         fabvdb::api::require(out_dir, "out_dir");
         const fabvdb_decompose_options options =
             fabvdb::api::options_from(opts, fabvdb_decompose_options_init, "fabvdb_decompose_options");
-        const fabvdb::surface::DecomposeSettings settings = fabvdb::api::decompose_settings(ctx, mesh->mesh, options);
+        fabvdb::surface::DecomposeSettings settings = fabvdb::api::decompose_settings(ctx, mesh->mesh, options);
+        settings.shell.input_name = mesh->name;
         const std::vector<fabvdb::surface::Edit> edits =
             edits_path ? fabvdb::surface::read_edits(edits_path) : std::vector<fabvdb::surface::Edit>{};
         fabvdb::Progress progress = ctx->make_progress();

@@ -129,7 +129,8 @@ fabvdb_status fabvdb_decomposition_new(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
         fabvdb::api::require(out, "out");
         const fabvdb_decompose_options options =
             fabvdb::api::options_from(opts, fabvdb_decompose_options_init, "fabvdb_decompose_options");
-        const fabvdb::surface::DecomposeSettings settings = fabvdb::api::decompose_settings(ctx, mesh->mesh, options);
+        fabvdb::surface::DecomposeSettings settings = fabvdb::api::decompose_settings(ctx, mesh->mesh, options);
+        settings.shell.input_name = mesh->name;
         fabvdb::Progress progress = ctx->make_progress();
         const auto start = std::chrono::steady_clock::now();
         auto handle = std::make_unique<fabvdb_decomposition>();

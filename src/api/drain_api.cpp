@@ -335,8 +335,8 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
         require_range(o.slope_window >= 1 && o.slope_window <= 16, "slope_window must be in [1, 16]");
         require_range(std::isfinite(o.voxel_size) && o.voxel_size >= 0.0, "voxel_size must be >= 0 mm (0: automatic)");
         const std::vector<fabvdb::powder::SandpileHole> holes = parse_holes(holes_json_text);
-        fabvdb::validate_mesh(part->mesh, "part");
-        if (part->mesh.triangles.empty()) throw fabvdb::Error(FABVDB_ERR_BAD_INPUT, "part: no triangles");
+        fabvdb::validate_mesh(part->mesh, part->name);
+        if (part->mesh.triangles.empty()) throw fabvdb::Error(FABVDB_ERR_BAD_INPUT, part->name + ": no triangles");
         std::map<std::string, double> timings;
         fabvdb::StageClock clock(timings);
         double voxel = o.voxel_size;
@@ -348,7 +348,7 @@ fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, c
         fabvdb::volume::SignedDistanceOptions distance;
         distance.voxel_size = voxel;
         distance.memory_budget_bytes = ctx->budget_bytes();
-        distance.input_name = "part";
+        distance.input_name = part->name;
         const openvdb::FloatGrid::Ptr solid = fabvdb::volume::signed_distance_from_mesh(part->mesh, distance, progress);
         clock.lap("signed distance");
 

@@ -16,7 +16,9 @@ namespace {
 using fabvdb::volume::HollowOptions;
 using fabvdb::volume::HollowResult;
 
-HollowOptions core_options(const fabvdb_hollow_options* opts, const fabvdb::Mesh& mesh, fabvdb_ctx* ctx) {
+//! The core's options; `name` is what messages call the input.
+HollowOptions core_options(const fabvdb_hollow_options* opts, const fabvdb::Mesh& mesh, const std::string& name,
+                           fabvdb_ctx* ctx) {
     const fabvdb_hollow_options given =
         fabvdb::api::options_from(opts, fabvdb_hollow_options_init, "fabvdb_hollow_options");
     HollowOptions options;
@@ -35,6 +37,7 @@ HollowOptions core_options(const fabvdb_hollow_options* opts, const fabvdb::Mesh
     options.infill.cell = given.infill_cell;
     options.infill.strut = given.infill_strut;
     options.memory_budget_bytes = ctx->budget_bytes();
+    options.input_name = name;
     return options;
 }
 
@@ -103,8 +106,7 @@ fabvdb_status fabvdb_mesh_hollow(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out_mesh, "out_mesh");
-        HollowOptions options = core_options(opts, mesh->mesh, ctx);
-        options.input_name = mesh->name;
+        const HollowOptions options = core_options(opts, mesh->mesh, mesh->name, ctx);
         fabvdb::Progress progress = ctx->make_progress();
         nlohmann::json report;
         HollowResult result = run_hollow(mesh->mesh, options, progress, out_report ? &report : nullptr);
@@ -119,12 +121,13 @@ fabvdb_status fabvdb_mesh_hollow_volume(fabvdb_ctx* ctx, const fabvdb_mesh* mesh
     return fabvdb::api::guard(ctx, [&] {
         fabvdb::api::require(mesh, "mesh");
         fabvdb::api::require(out_shell, "out_shell");
-        const HollowOptions options = core_options(opts, mesh->mesh, ctx);
+        const HollowOptions options = core_options(opts, mesh->mesh, mesh->name, ctx);
         fabvdb::Progress progress = ctx->make_progress();
         nlohmann::json report;
         const HollowResult result = run_hollow(mesh->mesh, options, progress, out_report ? &report : nullptr);
         auto shell = std::make_unique<fabvdb_volume>();
         shell->grid = fabvdb::volume::shell_level_set(result.mesh, result.voxel_size, progress);
+        shell->name = mesh->name;
         if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(report));
         *out_shell = shell.release();
     });
@@ -138,13 +141,13 @@ fabvdb_status fabvdb_volume_hollow(fabvdb_ctx* ctx, const fabvdb_volume* solid, 
         fabvdb::api::require(out_shell, "out_shell");
         fabvdb::Progress progress = ctx->make_progress();
         const fabvdb::Mesh outer = fabvdb::volume::extract_mesh(*solid->grid, 0.0, progress);
-        HollowOptions options = core_options(opts, outer, ctx);
+        HollowOptions options = core_options(opts, outer, solid->name, ctx);
         options.voxel_size = solid->grid->voxelSize()[0];
-        options.input_name = "volume";
         nlohmann::json report;
         const HollowResult result = run_hollow(outer, options, progress, out_report ? &report : nullptr);
         auto shell = std::make_unique<fabvdb_volume>();
         shell->grid = fabvdb::volume::shell_level_set(result.mesh, result.voxel_size, progress);
+        shell->name = solid->name;
         if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(report));
         *out_shell = shell.release();
     });

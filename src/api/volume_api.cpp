@@ -31,7 +31,7 @@ fabvdb_volume_options options_or_defaults(const fabvdb_volume_options* options) 
     return fabvdb::api::options_from(options, fabvdb_volume_options_init, "fabvdb_volume_options");
 }
 
-fabvdb::volume::RepairOptions repair_options(const fabvdb_ctx* ctx, const fabvdb::Mesh& mesh,
+fabvdb::volume::RepairOptions repair_options(const fabvdb_ctx* ctx, const fabvdb_mesh& mesh,
                                              const fabvdb_volume_options& options) {
     if (options.voxel_size < 0.0 || !std::isfinite(options.voxel_size))
         throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "voxel_size must be >= 0");
@@ -41,9 +41,10 @@ fabvdb::volume::RepairOptions repair_options(const fabvdb_ctx* ctx, const fabvdb
         throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "min_shell_volume must be >= 0");
     if (!(options.thicken >= 0.0)) throw fabvdb::Error(FABVDB_ERR_INVALID_ARGUMENT, "thicken must be >= 0");
     fabvdb::volume::RepairOptions repair;
-    repair.distance.voxel_size = options.voxel_size > 0.0
-                                     ? options.voxel_size
-                                     : fabvdb::volume::voxel_size_for_resolution(mesh, options.resolution, "mesh");
+    repair.distance.voxel_size =
+        options.voxel_size > 0.0 ? options.voxel_size
+                                 : fabvdb::volume::voxel_size_for_resolution(mesh.mesh, options.resolution, mesh.name);
+    repair.distance.input_name = mesh.name;
     repair.distance.half_band_voxels = options.half_band_voxels;
     repair.distance.memory_budget_bytes = ctx->budget_bytes();
     repair.distance.thicken = options.thicken;
@@ -95,8 +96,7 @@ fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, 
         fabvdb::api::require(out, "out");
         std::map<std::string, double> stages;
         const fabvdb::StageClock clock(stages);
-        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, options_or_defaults(options));
-        repair.distance.input_name = mesh->name;
+        fabvdb::volume::RepairOptions repair = repair_options(ctx, *mesh, options_or_defaults(options));
         repair.extract = false;
         fabvdb::Progress progress = ctx->make_progress();
         fabvdb::volume::RepairResult result = fabvdb::volume::repair(mesh->mesh, repair, progress);
@@ -104,6 +104,7 @@ fabvdb_status fabvdb_volume_from_mesh(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, 
         document["volume"] = fabvdb::volume::level_set_volume(*result.grid);
         auto volume = std::make_unique<fabvdb_volume>();
         volume->grid = result.grid;
+        volume->name = mesh->name;
         if (report) *report = fabvdb::api::new_report_handle(std::move(document));
         *out = volume.release();
     });
@@ -129,8 +130,7 @@ fabvdb_status fabvdb_mesh_repair(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const
         std::map<std::string, double> stages;
         fabvdb::StageClock clock(stages);
         const fabvdb_volume_options chosen = options_or_defaults(options);
-        fabvdb::volume::RepairOptions repair = repair_options(ctx, mesh->mesh, chosen);
-        repair.distance.input_name = mesh->name;
+        fabvdb::volume::RepairOptions repair = repair_options(ctx, *mesh, chosen);
         fabvdb::Progress progress = ctx->make_progress();
         nlohmann::json input;
         if (report) input = fabvdb::surface::inspect_mesh(mesh->mesh, progress);
@@ -275,6 +275,7 @@ fabvdb_status fabvdb_volume_read(fabvdb_ctx* ctx, const char* path, fabvdb_volum
             if (level_set && level_set->getGridClass() == openvdb::GRID_LEVEL_SET) {
                 auto volume = std::make_unique<fabvdb_volume>();
                 volume->grid = level_set;
+                volume->name = path;
                 *out = volume.release();
                 return;
             }

@@ -3,8 +3,13 @@
 //! only the API files that deal with volumes include OpenVDB.
 #pragma once
 
+#include <string>
+
 #include <openvdb/openvdb.h>
 
 struct fabvdb_volume {
     openvdb::FloatGrid::Ptr grid;
+    //! What messages call it: the file it was read from, or the mesh it was
+    //! made from, else "volume".
+    std::string name = "volume";
 };

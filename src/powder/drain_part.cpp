@@ -174,6 +174,7 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
     const openvdb::FloatGrid::Ptr part = level_set_of(shells.outer, voxel);
     DrainPlanOptions plan_options = options.plan;
     plan_options.nominal_wall = options.wall;
+    plan_options.input_name = options.input_name;
     size_t filled_count = 0;
     double filled_volume = 0.0;
     for (;;) {

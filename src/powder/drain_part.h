@@ -28,7 +28,7 @@ struct DrainPartOptions {
     double voxel_size = 0.0;    //!< mm; 0: wall / 4
     uint64_t memory_budget_bytes = 0;
     std::string input_name = "mesh";
-    DrainPlanOptions plan;      //!< plan.nominal_wall is set to `wall`
+    DrainPlanOptions plan;      //!< plan.nominal_wall and plan.input_name are set from here
 };
 
 struct DrainPartResult {

@@ -72,7 +72,7 @@ DrainPlan plan_drain_holes(const openvdb::FloatGrid& part, const openvdb::FloatG
     clock.lap("transfer and settle matrices");
 
     const PowderSamples powder =
-        drop_cavity_powder(cavity, plan.patches, caster, first, options.powder_samples, progress);
+        drop_cavity_powder(cavity, plan.patches, caster, first, options.powder_samples, options.input_name, progress);
     clock.lap("powder drop");
 
     DrainabilityOptions model_options;

@@ -40,6 +40,7 @@ struct DrainPlanOptions {
     Vec3 first_gravity{0, 0, -1};
     size_t patch_count = 2000;
     size_t powder_samples = 60000;
+    std::string input_name = "mesh";  //!< what messages call the part
     HoleSearchOptions search;
     KeepOut keep_out;
     //! If set, called once the holes are chosen with the model, every

@@ -205,6 +205,176 @@ private:
     Reaches reach_, surface_reach_;  //!< per candidate, once needed
 };
 
+//! The holes chosen so far, as candidates, through the phases of the
+//! search: the greedy additions, the swaps by the search's objective, the
+//! routine's target (automatic mode) and the prediction's judgement.
+class Placement {
+public:
+    Placement(const DrainabilityModel& model, const std::vector<DrainHole>& candidates, uint32_t cavity_count,
+              const HoleSearchOptions& options, Progress& progress)
+        : model_(model), candidates_(candidates), cavity_count_(cavity_count), options_(options), progress_(progress),
+          search_(model, candidates, options), count_(cavity_count, 0) {
+        drain_ = search_.drain(chosen_);
+        for (double v : drain_.residual_per_cavity) residual_ += v;
+        total_ = model.total_volume();
+        negligible_ = 1e-6 * total_;
+        automatic_ = options.hole_count == 0;
+        per_cavity_ = automatic_ ? options.min_per_cavity
+                                 : std::min(options.min_per_cavity,
+                                            options.hole_count / int(std::max<uint32_t>(cavity_count, 1)));
+        ceiling_ = automatic_ ? std::max(options.max_holes, per_cavity_ * int(cavity_count)) : options.hole_count;
+    }
+
+    bool automatic() const { return automatic_; }
+
+    //! Phase 1: the best holes one at a time, first the minimum in each
+    //! cavity, then anywhere up to the count (automatic: until the residual
+    //! is under the target or a hole no longer helps).
+    void add_greedily() {
+        for (uint32_t cavity = 0; cavity < cavity_count_; ++cavity)
+            while (count_[cavity] < per_cavity_) {
+                progress_.check();
+                const Choice choice = search_.best_addition(drain_, residual_, int(cavity));
+                if (!choice.found) break;
+                add(choice);
+            }
+        while (int(chosen_.size()) < ceiling_) {
+            progress_.update(double(chosen_.size()) / double(ceiling_ + 1));
+            if (automatic_ && residual_ < options_.target_residual_fraction * total_) break;
+            if (!add_best()) break;
+        }
+    }
+
+    //! Phase 2: local swaps by the search's objective.
+    void swap_by_objective(HoleSearchResult& result) {
+        swap_holes(residual_, result, [&](const std::vector<size_t>& others, const DrainHole& moved) {
+            const int only_cavity = count_[moved.cavity] <= per_cavity_ ? int(moved.cavity) : -1;
+            return search_.best_move(search_.drain(others), moved, only_cavity);
+        });
+    }
+
+    //! Phase 3, automatic mode: the prediction is the surface of repose's,
+    //! which keeps more than the cone the search compares. Holes are added
+    //! (by the cone's gain) while the prediction under the cleaning routine
+    //! for them is over the target, then the hole whose loss the prediction
+    //! (random routines) feels least is dropped while the routine's
+    //! prediction stays under it: the fewest holes that meet it.
+    void meet_routine_target() {
+        const double target = options_.target_residual_fraction * total_;
+        while (int(chosen_.size()) < ceiling_ && routine_kept(chosen_) >= target) {
+            progress_.check();
+            if (!add_best()) break;
+        }
+        for (;;) {
+            progress_.check();
+            Choice drop;
+            for (size_t h = 0; h < chosen_.size(); ++h) {
+                if (count_[candidates_[chosen_[h]].cavity] <= per_cavity_) continue;
+                std::vector<size_t> others = chosen_;
+                others.erase(others.begin() + long(h));
+                const double without = search_.predicted(others);
+                if (!drop.found || without < drop.residual) drop = {h, without, true};
+            }
+            if (!drop.found) break;
+            std::vector<size_t> fewer = chosen_;
+            fewer.erase(fewer.begin() + long(drop.candidate));
+            if (routine_kept(fewer) >= target) break;
+            --count_[candidates_[chosen_[drop.candidate]].cavity];
+            chosen_ = std::move(fewer);
+        }
+    }
+
+    //! Phase 4: the prediction (random routines) judges the holes against as
+    //! many lowest-point ones, keeps the better, polishes them by swaps and
+    //! evaluates both sets (see hole_search.h).
+    void judge(const Vec3& first_gravity, HoleSearchResult& result) {
+        double kept = search_.predicted(chosen_);
+        const std::vector<size_t> lowest =
+            baseline_holes(candidates_, count_, first_gravity, options_.min_center_distance);
+        const double lowest_kept = search_.predicted(lowest);
+        if (lowest_kept < kept) {
+            chosen_ = lowest;
+            kept = lowest_kept;
+        }
+        swap_holes(kept, result, [&](const std::vector<size_t>& others, const DrainHole& moved) {
+            return search_.best_predicted_move(others, moved, int(moved.cavity));
+        });
+        const DrainabilityModel::Drain drained = search_.predicted_drain(chosen_);
+        result.evaluation = model_.evaluate(drained);
+        result.routine = model_.best_routine(drained, model_.later_turns(), progress_);
+        result.routine_evaluation = model_.evaluate(drained, {result.routine});
+        result.random_residuals = model_.random_routine_residuals(drained);
+        const DrainabilityModel::Drain lowest_drained = search_.predicted_drain(lowest);
+        result.baseline_evaluation = model_.evaluate(lowest_drained);
+        result.baseline_routine_residual = model_.routine_residual(
+            lowest_drained, model_.best_routine(lowest_drained, model_.later_turns(), progress_));
+        for (size_t c : chosen_) result.holes.push_back(candidates_[c]);
+        for (size_t c : lowest) result.baseline.push_back(candidates_[c]);
+    }
+
+private:
+    void add(const Choice& choice) {
+        chosen_.push_back(choice.candidate);
+        ++count_[candidates_[choice.candidate].cavity];
+        drain_ = search_.drain(chosen_);
+        residual_ = choice.residual;
+    }
+
+    //! Adds the best hole anywhere; false when there is none, or (automatic)
+    //! when it no longer helps.
+    bool add_best() {
+        const Choice choice = search_.best_addition(drain_, residual_, -1);
+        if (!choice.found || (automatic_ && choice.residual >= residual_ - negligible_)) return false;
+        add(choice);
+        return true;
+    }
+
+    //! Local swaps: moves one hole to a better site nearby while that lowers
+    //! `current`; `best_move(others, moved)` finds the best site for `moved`
+    //! beside the holes `others`.
+    template <typename BestMove>
+    void swap_holes(double& current, HoleSearchResult& result, BestMove best_move) {
+        for (int pass = 0; pass < 2; ++pass) {
+            bool improved = false;
+            for (size_t h = 0; h < chosen_.size(); ++h) {
+                progress_.check();
+                std::vector<size_t> others = chosen_;
+                others.erase(others.begin() + long(h));
+                const DrainHole& moved = candidates_[chosen_[h]];
+                const Choice choice = best_move(others, moved);
+                if (!choice.found || choice.residual >= current - negligible_) continue;
+                --count_[moved.cavity];
+                ++count_[candidates_[choice.candidate].cavity];
+                chosen_[h] = choice.candidate;
+                current = choice.residual;
+                ++result.swaps;
+                improved = true;
+            }
+            if (!improved) break;
+        }
+    }
+
+    //! The prediction under the cleaning routine the holes would get.
+    double routine_kept(const std::vector<size_t>& holes) {
+        const DrainabilityModel::Drain drained = search_.predicted_drain(holes);
+        return model_.routine_residual(drained, model_.best_routine(drained, model_.later_turns(), progress_));
+    }
+
+    const DrainabilityModel& model_;
+    const std::vector<DrainHole>& candidates_;
+    const uint32_t cavity_count_;
+    const HoleSearchOptions& options_;
+    Progress& progress_;
+    Search search_;
+    std::vector<size_t> chosen_;  //!< the holes, as candidates
+    std::vector<int> count_;      //!< holes per cavity
+    DrainabilityModel::Drain drain_;
+    double residual_ = 0.0;  //!< by the search's objective
+    double total_ = 0.0, negligible_ = 0.0;
+    bool automatic_ = false;
+    int per_cavity_ = 0, ceiling_ = 0;
+};
+
 }  // namespace
 
 HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::vector<DrainHole>& candidates,
@@ -212,131 +382,12 @@ HoleSearchResult search_drain_holes(const DrainabilityModel& model, const std::v
                                     Progress& progress) {
     progress.stage("hole search");
     if (options.hole_count < 0) throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the hole count cannot be negative");
-    Search search(model, candidates, options);
     HoleSearchResult result;
-    std::vector<size_t> chosen;  // the holes, as candidates
-    DrainabilityModel::Drain drain = search.drain(chosen);
-    double residual = 0.0;
-    for (double v : drain.residual_per_cavity) residual += v;
-    const double total = model.total_volume();
-    const double negligible = 1e-6 * total;
-    const bool automatic = options.hole_count == 0;
-    const int per_cavity =
-        automatic ? options.min_per_cavity
-                  : std::min(options.min_per_cavity, options.hole_count / int(std::max<uint32_t>(cavity_count, 1)));
-    const int ceiling = automatic ? std::max(options.max_holes, per_cavity * int(cavity_count)) : options.hole_count;
-
-    std::vector<int> count(cavity_count, 0);
-    auto add = [&](const Choice& choice) {
-        chosen.push_back(choice.candidate);
-        ++count[candidates[choice.candidate].cavity];
-        drain = search.drain(chosen);
-        residual = choice.residual;
-    };
-    // Adds the best hole anywhere; false when there is none, or (automatic)
-    // when it no longer helps.
-    auto add_best = [&] {
-        const Choice choice = search.best_addition(drain, residual, -1);
-        if (!choice.found || (automatic && choice.residual >= residual - negligible)) return false;
-        add(choice);
-        return true;
-    };
-    for (uint32_t cavity = 0; cavity < cavity_count; ++cavity)
-        while (count[cavity] < per_cavity) {
-            progress.check();
-            const Choice choice = search.best_addition(drain, residual, int(cavity));
-            if (!choice.found) break;
-            add(choice);
-        }
-    while (int(chosen.size()) < ceiling) {
-        progress.update(double(chosen.size()) / double(ceiling + 1));
-        if (automatic && residual < options.target_residual_fraction * total) break;
-        if (!add_best()) break;
-    }
-
-    // Local swaps: move one hole to a better site nearby while that lowers
-    // `current`; `best_move(others, moved)` finds the best site for `moved`
-    // beside the holes `others`.
-    auto swap_holes = [&](double& current, auto best_move) {
-        for (int pass = 0; pass < 2; ++pass) {
-            bool improved = false;
-            for (size_t h = 0; h < chosen.size(); ++h) {
-                progress.check();
-                std::vector<size_t> others = chosen;
-                others.erase(others.begin() + long(h));
-                const DrainHole& moved = candidates[chosen[h]];
-                const Choice choice = best_move(others, moved);
-                if (!choice.found || choice.residual >= current - negligible) continue;
-                --count[moved.cavity];
-                ++count[candidates[choice.candidate].cavity];
-                chosen[h] = choice.candidate;
-                current = choice.residual;
-                ++result.swaps;
-                improved = true;
-            }
-            if (!improved) break;
-        }
-    };
-    swap_holes(residual, [&](const std::vector<size_t>& others, const DrainHole& moved) {
-        const int only_cavity = count[moved.cavity] <= per_cavity ? int(moved.cavity) : -1;
-        return search.best_move(search.drain(others), moved, only_cavity);
-    });
-    // The prediction is the surface of repose's, which keeps more than the
-    // cone the search compares: in automatic mode holes go on being added
-    // (by the cone's gain) while the prediction is over the target.
-    // Automatic mode: holes are added while the prediction under the
-    // cleaning routine for them is over the target, then the hole whose loss
-    // the prediction (random routines) feels least is dropped while the
-    // routine's prediction stays under it: the fewest holes that meet it.
-    const double target = options.target_residual_fraction * total;
-    auto routine_kept = [&](const std::vector<size_t>& holes) {
-        const DrainabilityModel::Drain drained = search.predicted_drain(holes);
-        return model.routine_residual(drained, model.best_routine(drained, model.later_turns(), progress));
-    };
-    while (automatic && int(chosen.size()) < ceiling && routine_kept(chosen) >= target) {
-        progress.check();
-        if (!add_best()) break;
-    }
-    while (automatic) {
-        progress.check();
-        Choice drop;
-        for (size_t h = 0; h < chosen.size(); ++h) {
-            if (count[candidates[chosen[h]].cavity] <= per_cavity) continue;
-            std::vector<size_t> others = chosen;
-            others.erase(others.begin() + long(h));
-            const double without = search.predicted(others);
-            if (!drop.found || without < drop.residual) drop = {h, without, true};
-        }
-        if (!drop.found) break;
-        std::vector<size_t> fewer = chosen;
-        fewer.erase(fewer.begin() + long(drop.candidate));
-        if (routine_kept(fewer) >= target) break;
-        --count[candidates[chosen[drop.candidate]].cavity];
-        chosen = std::move(fewer);
-    }
-
-    // The prediction (random routines) judges and polishes the result (see hole_search.h).
-    double kept = search.predicted(chosen);
-    const std::vector<size_t> lowest = baseline_holes(candidates, count, first_gravity, options.min_center_distance);
-    const double lowest_kept = search.predicted(lowest);
-    if (lowest_kept < kept) {
-        chosen = lowest;
-        kept = lowest_kept;
-    }
-    swap_holes(kept, [&](const std::vector<size_t>& others, const DrainHole& moved) {
-        return search.best_predicted_move(others, moved, int(moved.cavity));
-    });
-    const DrainabilityModel::Drain drained = search.predicted_drain(chosen);
-    result.evaluation = model.evaluate(drained);
-    result.routine = model.best_routine(drained, model.later_turns(), progress);
-    result.routine_evaluation = model.evaluate(drained, {result.routine});
-    result.random_residuals = model.random_routine_residuals(drained);
-    const DrainabilityModel::Drain lowest_drained = search.predicted_drain(lowest);
-    result.baseline_evaluation = model.evaluate(lowest_drained);
-    result.baseline_routine_residual =
-        model.routine_residual(lowest_drained, model.best_routine(lowest_drained, model.later_turns(), progress));
-    for (size_t c : chosen) result.holes.push_back(candidates[c]);
-    for (size_t c : lowest) result.baseline.push_back(candidates[c]);
+    Placement placement(model, candidates, cavity_count, options, progress);
+    placement.add_greedily();
+    placement.swap_by_objective(result);
+    if (placement.automatic()) placement.meet_routine_target();
+    placement.judge(first_gravity, result);
     progress.update(1.0);
     return result;
 }

@@ -11,7 +11,7 @@ namespace fabvdb::powder {
 
 PowderSamples drop_cavity_powder(const openvdb::FloatGrid& cavity, const CavityPatches& patches,
                                  const volume::SurfaceRayCaster& caster, const OrientationFlow& first, size_t max_samples,
-                                 Progress& progress) {
+                                 const std::string& input_name, Progress& progress) {
     progress.stage("powder drop");
     const openvdb::CoordBBox box = cavity.evalActiveVoxelBoundingBox();
     if (box.empty()) throw Error(FABVDB_ERR_BAD_INPUT, "the cavity is empty");
@@ -61,8 +61,8 @@ PowderSamples drop_cavity_powder(const openvdb::FloatGrid& cavity, const CavityP
     // then its own voxels are the samples.
     if (samples.position.empty()) samples = sample(voxel, 0.0);
     if (samples.position.empty())
-        throw Error(FABVDB_ERR_BAD_INPUT, "input: its cavity holds no powder sample: no voxel of it is reached "
-                                          "from above by a ray to its surface");
+        throw Error(FABVDB_ERR_BAD_INPUT, input_name + ": its cavity holds no powder sample: no voxel of it is "
+                                                       "reached from above by a ray to its surface");
     progress.update(1.0);
     return samples;
 }

@@ -5,11 +5,13 @@
 //! (Embree) and follows the settle matrix to the patch where it comes to rest.
 //! Every sample stands for `sample_volume` mm³ of powder; their sum is the
 //! cavity volume to within the sampling. Each sample keeps its grid cell
-//! (position = origin + cell · spacing). Cancellable (Error(CANCELLED)).
+//! (position = origin + cell · spacing). A cavity that holds no sample is
+//! Error(BAD_INPUT) naming `input_name`. Cancellable (Error(CANCELLED)).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <openvdb/openvdb.h>
@@ -37,6 +39,6 @@ struct PowderSamples {
 
 PowderSamples drop_cavity_powder(const openvdb::FloatGrid& cavity, const CavityPatches& patches,
                                  const volume::SurfaceRayCaster& caster, const OrientationFlow& first, size_t max_samples,
-                                 Progress& progress);
+                                 const std::string& input_name, Progress& progress);
 
 }  // namespace fabvdb::powder

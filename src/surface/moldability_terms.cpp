@@ -96,38 +96,99 @@ struct Change {
     const MoldabilityTerms::Overlaps& previous;
 };
 
-//! The overlaps along `axis`. With a `change`, only the pairs of a changed
-//! triangle are measured again (through the grid); the previous pairs of
-//! unchanged triangles are kept.
-MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& axis, const Change* change) {
+//! The outer triangles projected on the plane normal to an axis: each one's
+//! 2-D triangle (counter-clockwise when it faces the axis), its box, whether
+//! it is usable (not edge-on), and the mean box side.
+struct Projection {
+    std::vector<std::array<Point2, 3>> triangles;
+    std::vector<Box2> boxes;
+    std::vector<char> usable;
+    double mean_size = 0;
+};
+
+Projection project_shell(const Shell& shell, const Vec3& axis) {
     const size_t n = shell.triangle_count();
     const auto [u, v] = projection_basis(axis);
-    std::vector<std::array<Point2, 3>> projected(n);
-    std::vector<Box2> boxes(n);
-    std::vector<char> usable(n);
+    Projection projection;
+    projection.triangles.resize(n);
+    projection.boxes.resize(n);
+    projection.usable.resize(n);
     double mean_size = 0;
     for (size_t t = 0; t < n; ++t) {
         const Triangle& f = shell.outer.triangles[t];
         const double facing = dot(shell.normal[t], axis);
-        usable[t] = std::abs(facing) > 1e-9;
-        auto& tri = projected[t];
+        projection.usable[t] = std::abs(facing) > 1e-9;
+        auto& tri = projection.triangles[t];
         tri = project_triangle({shell.outer.vertices[f[0]], shell.outer.vertices[f[1]], shell.outer.vertices[f[2]]}, u,
                                v, facing);
-        Box2& box = boxes[t];
+        Box2& box = projection.boxes[t];
         box.lo[0] = std::min({tri[0].x, tri[1].x, tri[2].x});
         box.hi[0] = std::max({tri[0].x, tri[1].x, tri[2].x});
         box.lo[1] = std::min({tri[0].y, tri[1].y, tri[2].y});
         box.hi[1] = std::max({tri[0].y, tri[1].y, tri[2].y});
         mean_size += (box.hi[0] - box.lo[0]) + (box.hi[1] - box.lo[1]);
     }
-    mean_size = std::max(mean_size / (2.0 * n), 1e-12);
-    const double area_scale = shell.unit_scale * shell.unit_scale;
-    const double tiny = 1e-9 * mean_size * mean_size;
-    struct Pair {
-        uint32_t a, b;
-        float area;
+    projection.mean_size = std::max(mean_size / (2.0 * n), 1e-12);
+    return projection;
+}
+
+//! The usable boxes binned in a grid of cells twice the mean box size: cell
+//! (i, j) lists the boxes that meet it, items[start[c]] to items[start[c+1]].
+struct BoxGrid {
+    double lo[2] = {1e300, 1e300};
+    double cell = 0;
+    int nx = 1, ny = 1;
+    std::vector<uint32_t> start, items;
+
+    int cell_of(double value, int k) const {
+        return std::clamp(int((value - lo[k]) / cell), 0, (k == 0 ? nx : ny) - 1);
+    }
+    size_t index(int i, int j) const { return size_t(j) * nx + i; }
+};
+
+BoxGrid bin_boxes(const Projection& projection) {
+    const std::vector<Box2>& boxes = projection.boxes;
+    BoxGrid grid;
+    double hi[2] = {-1e300, -1e300};
+    for (const Box2& b : boxes)
+        for (int k = 0; k < 2; ++k) {
+            grid.lo[k] = std::min(grid.lo[k], b.lo[k]);
+            hi[k] = std::max(hi[k], b.hi[k]);
+        }
+    grid.cell = 2.0 * projection.mean_size;
+    grid.nx = std::max(1, int((hi[0] - grid.lo[0]) / grid.cell) + 1);
+    grid.ny = std::max(1, int((hi[1] - grid.lo[1]) / grid.cell) + 1);
+    const auto for_cells = [&](size_t t, auto&& visit) {
+        for (int j = grid.cell_of(boxes[t].lo[1], 1); j <= grid.cell_of(boxes[t].hi[1], 1); ++j)
+            for (int i = grid.cell_of(boxes[t].lo[0], 0); i <= grid.cell_of(boxes[t].hi[0], 0); ++i)
+                visit(grid.index(i, j));
     };
-    std::vector<Pair> found;  // each overlapping pair once
+    grid.start.assign(size_t(grid.nx) * grid.ny + 1, 0);
+    for (size_t t = 0; t < boxes.size(); ++t)
+        if (projection.usable[t]) for_cells(t, [&](size_t c) { ++grid.start[c + 1]; });
+    for (size_t c = 1; c < grid.start.size(); ++c) grid.start[c] += grid.start[c - 1];
+    grid.items.resize(grid.start.back());
+    std::vector<uint32_t> fill(grid.start.begin(), grid.start.end() - 1);
+    for (size_t t = 0; t < boxes.size(); ++t)
+        if (projection.usable[t]) for_cells(t, [&](size_t c) { grid.items[fill[c]++] = uint32_t(t); });
+    return grid;
+}
+
+struct Pair {
+    uint32_t a, b;
+    float area;
+};
+
+//! The pairs of triangles that face alike along `axis` and whose
+//! projections share more than `tiny` (area in the shell's units, scaled to
+//! mm²), each once. A pair is measured in the one grid cell that holds the
+//! lower corner of the overlap of its boxes. With a `change`, only the pairs
+//! of a changed triangle.
+std::vector<Pair> overlapping_pairs(const Shell& shell, const Vec3& axis, const Projection& projection, double tiny,
+                                    const Change* change) {
+    const std::vector<Box2>& boxes = projection.boxes;
+    const double area_scale = shell.unit_scale * shell.unit_scale;
+    std::vector<Pair> found;
     const auto boxes_meet = [&](uint32_t a, uint32_t b) {
         return std::max(boxes[a].lo[0], boxes[b].lo[0]) <= std::min(boxes[a].hi[0], boxes[b].hi[0]) &&
                std::max(boxes[a].lo[1], boxes[b].lo[1]) <= std::min(boxes[a].hi[1], boxes[b].hi[1]);
@@ -139,69 +200,44 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
         // shared edge (they run it in opposite senses): no common area.
         const auto& around = shell.neighbor[a];
         if (around[0] == int(b) || around[1] == int(b) || around[2] == int(b)) return;
-        const double shared = intersection_area(projected[a], projected[b]);
+        const double shared = intersection_area(projection.triangles[a], projection.triangles[b]);
         if (shared <= tiny) return;
         found.push_back({a, b, float(shared * area_scale)});
     };
-    // A grid of cells twice the mean box size; a pair is measured in the one
-    // cell that holds the lower corner of the overlap of its boxes.
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (const Box2& b : boxes)
-        for (int k = 0; k < 2; ++k) {
-            lo[k] = std::min(lo[k], b.lo[k]);
-            hi[k] = std::max(hi[k], b.hi[k]);
-        }
-    const double cell = 2.0 * mean_size;
-    const int nx = std::max(1, int((hi[0] - lo[0]) / cell) + 1);
-    const int ny = std::max(1, int((hi[1] - lo[1]) / cell) + 1);
-    const auto cell_of = [&](double value, int k) {
-        return std::clamp(int((value - lo[k]) / cell), 0, (k == 0 ? nx : ny) - 1);
-    };
+    const BoxGrid grid = bin_boxes(projection);
     const auto measure_in_cell = [&](uint32_t a, uint32_t b, int i, int j) {
-        if (boxes_meet(a, b) && cell_of(std::max(boxes[a].lo[0], boxes[b].lo[0]), 0) == i &&
-            cell_of(std::max(boxes[a].lo[1], boxes[b].lo[1]), 1) == j)
+        if (boxes_meet(a, b) && grid.cell_of(std::max(boxes[a].lo[0], boxes[b].lo[0]), 0) == i &&
+            grid.cell_of(std::max(boxes[a].lo[1], boxes[b].lo[1]), 1) == j)
             measure(a, b);
     };
-    {
-        std::vector<uint32_t> cell_start(size_t(nx) * ny + 1, 0);
-        for (size_t t = 0; t < n; ++t) {
-            if (!usable[t]) continue;
-            for (int j = cell_of(boxes[t].lo[1], 1); j <= cell_of(boxes[t].hi[1], 1); ++j)
-                for (int i = cell_of(boxes[t].lo[0], 0); i <= cell_of(boxes[t].hi[0], 0); ++i)
-                    ++cell_start[size_t(j) * nx + i + 1];
-        }
-        for (size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
-        std::vector<uint32_t> cell_items(cell_start.back());
-        std::vector<uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
-        for (size_t t = 0; t < n; ++t) {
-            if (!usable[t]) continue;
-            for (int j = cell_of(boxes[t].lo[1], 1); j <= cell_of(boxes[t].hi[1], 1); ++j)
-                for (int i = cell_of(boxes[t].lo[0], 0); i <= cell_of(boxes[t].hi[0], 0); ++i)
-                    cell_items[fill[size_t(j) * nx + i]++] = uint32_t(t);
-        }
-        if (!change) {
-            for (int j = 0; j < ny; ++j)
-                for (int i = 0; i < nx; ++i) {
-                    const size_t c = size_t(j) * nx + i;
-                    for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x)
-                        for (uint32_t y = x + 1; y < cell_start[c + 1]; ++y)
-                            measure_in_cell(cell_items[x], cell_items[y], i, j);
-                }
-        } else {
-            for (uint32_t a : change->triangles) {
-                if (!usable[a]) continue;
-                for (int j = cell_of(boxes[a].lo[1], 1); j <= cell_of(boxes[a].hi[1], 1); ++j)
-                    for (int i = cell_of(boxes[a].lo[0], 0); i <= cell_of(boxes[a].hi[0], 0); ++i) {
-                        const size_t c = size_t(j) * nx + i;
-                        for (uint32_t x = cell_start[c]; x < cell_start[c + 1]; ++x) {
-                            const uint32_t b = cell_items[x];
-                            if (b != a && !(change->flag[b] && b < a)) measure_in_cell(a, b, i, j);
-                        }
-                    }
+    if (!change) {
+        for (int j = 0; j < grid.ny; ++j)
+            for (int i = 0; i < grid.nx; ++i) {
+                const size_t c = grid.index(i, j);
+                for (uint32_t x = grid.start[c]; x < grid.start[c + 1]; ++x)
+                    for (uint32_t y = x + 1; y < grid.start[c + 1]; ++y)
+                        measure_in_cell(grid.items[x], grid.items[y], i, j);
             }
-        }
+        return found;
     }
-    // CSR: the kept pairs of unchanged triangles first, then the measured ones.
+    for (uint32_t a : change->triangles) {
+        if (!projection.usable[a]) continue;
+        for (int j = grid.cell_of(boxes[a].lo[1], 1); j <= grid.cell_of(boxes[a].hi[1], 1); ++j)
+            for (int i = grid.cell_of(boxes[a].lo[0], 0); i <= grid.cell_of(boxes[a].hi[0], 0); ++i) {
+                const size_t c = grid.index(i, j);
+                for (uint32_t x = grid.start[c]; x < grid.start[c + 1]; ++x) {
+                    const uint32_t b = grid.items[x];
+                    if (b != a && !(change->flag[b] && b < a)) measure_in_cell(a, b, i, j);
+                }
+            }
+    }
+    return found;
+}
+
+//! The pair lists of `n` triangles (CSR): with a `change`, the previous
+//! pairs of two unchanged triangles first, then the `found` ones, each
+//! under both its triangles.
+MoldabilityTerms::Overlaps pair_lists(size_t n, const std::vector<Pair>& found, double tiny, const Change* change) {
     const auto kept = [&](uint32_t t, uint32_t k) {
         return change && !change->flag[t] && !change->flag[change->previous.partner[k]];
     };
@@ -233,6 +269,16 @@ MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& a
         add(p.b, p.a, p.area);
     }
     return result;
+}
+
+//! The overlaps along `axis`. With a `change`, only the pairs of a changed
+//! triangle are measured again (through the grid); the previous pairs of
+//! unchanged triangles are kept.
+MoldabilityTerms::Overlaps overlaps_along_axis(const Shell& shell, const Vec3& axis, const Change* change) {
+    const Projection projection = project_shell(shell, axis);
+    const double tiny = 1e-9 * projection.mean_size * projection.mean_size;
+    const std::vector<Pair> found = overlapping_pairs(shell, axis, projection, tiny, change);
+    return pair_lists(shell.triangle_count(), found, tiny, change);
 }
 
 //! The triangles near a few changed ones along an axis, found by bounding

@@ -121,23 +121,13 @@ Mesh flipped(Mesh mesh) {
     return mesh;
 }
 
-HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, const CentredFrame& frame,
-                             Progress& progress) {
-    openvdb::initialize();
-    HollowResult result;
-    StageClock clock(result.timings);
-    // With infill at most strut / 4 automatically, so a strut is four voxels across.
-    const double voxel = options.voxel_size > 0.0 ? options.voxel_size
-                         : options.infill.cell > 0.0
-                             ? std::min(automatic_hollow_voxel(options.wall), options.infill.strut / 4.0)
-                             : automatic_hollow_voxel(options.wall);
-    result.voxel_size = voxel;
-
-    // The outer surface: the input itself when it is clean, its shells' union
-    // when only crossings spoil it and the union survives float rounding,
-    // else the surface of its robust signed distance.
+//! The outer surface: the input itself when it is clean, its shells' union
+//! when only crossings spoil it and the union survives float rounding, else
+//! the surface of its robust signed distance. Sets the result's
+//! outer_surface and fidelity (and a warning when the union was refused).
+Mesh outer_surface(const Mesh& input, const HollowOptions& options, double voxel, const CentredFrame& frame,
+                   HollowResult& result, StageClock& clock, Progress& progress) {
     check_budget(input, options, voxel);
-    Mesh outer;
     const SolidCheck check = check_solid(input, progress);
     clock.lap("check input");
     std::optional<Mesh> resolved;
@@ -159,27 +149,35 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
         clock.lap("fidelity");
     }
     if (check.clean) {
-        outer = input;
         result.outer_surface = "input";
-    } else if (resolved) {
-        outer = std::move(*resolved);
-        result.outer_surface = "resolved";
-    } else {
-        RepairOptions repair_options;
-        repair_options.distance.voxel_size = voxel;
-        repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
-        repair_options.distance.input_name = options.input_name;
-        RepairResult repaired = repair_in_frame(input, repair_options, frame, progress);
-        outer = std::move(repaired.mesh);
-        result.outer_surface = "repaired";
-        clock.lap("repair");
-        result.fidelity_limits = voxel_limits(voxel);
-        result.fidelity = measure_fidelity(input, outer, result.fidelity_limits, progress, repaired.grid.get());
-        require_faithful(result.fidelity, options.input_name, "hollowed part's outer surface");
-        clock.lap("fidelity");
+        return input;
     }
-    result.volume_solid = signed_volume(outer);
+    if (resolved) {
+        result.outer_surface = "resolved";
+        return std::move(*resolved);
+    }
+    RepairOptions repair_options;
+    repair_options.distance.voxel_size = voxel;
+    repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
+    repair_options.distance.input_name = options.input_name;
+    RepairResult repaired = repair_in_frame(input, repair_options, frame, progress);
+    result.outer_surface = "repaired";
+    clock.lap("repair");
+    result.fidelity_limits = voxel_limits(voxel);
+    result.fidelity = measure_fidelity(input, repaired.mesh, result.fidelity_limits, progress, repaired.grid.get());
+    require_faithful(result.fidelity, options.input_name, "hollowed part's outer surface");
+    clock.lap("fidelity");
+    return std::move(repaired.mesh);
+}
 
+//! The cavity's surface, before the snap: the core at -(wall + opening) of
+//! the outer surface's interior distance, its distance rebuilt by fast
+//! sweeping, grown back by the opening, the infill's struts carved out. No
+//! value that deep: no core, so no cavity (the part is nowhere thick enough
+//! for one; a warning says so) and an empty surface. `closest_triangle`
+//! receives the interior distance's nearest triangles, which the snap reads.
+Mesh cavity_before_snap(const Mesh& outer, const HollowOptions& options, double voxel, HollowResult& result,
+                        StageClock& clock, Progress& progress, openvdb::Int32Grid::Ptr& closest_triangle) {
     // Distances down to the deepest iso-surface the cavity needs.
     const double opening = cavity_opening(options, voxel);
     const double depth = options.wall + opening;
@@ -195,10 +193,6 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
                 << " mm; it is returned solid";
         result.warnings.push_back(message.str());
     }
-
-    // The cavity: the core at -(wall + opening), its distance rebuilt by fast
-    // sweeping, grown back by the opening. No value that deep: no core, so
-    // no cavity (the part is nowhere thick enough for one).
     progress.stage("cavity offset");
     openvdb::FloatGrid::Ptr cavity;
     if (thickest > depth) {
@@ -206,26 +200,24 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
         shift(*cavity, float(-opening));
     }
     solid.distance.reset();
+    closest_triangle = std::move(solid.closest_triangle);
     progress.check();
     clock.lap("cavity offset");
     if (cavity && options.infill.cell > 0.0) cavity = carve_gyroid_struts(*cavity, options.infill, progress);
     if (options.infill.cell > 0.0) clock.lap("infill");
-    Mesh cavity_surface = cavity ? extract_mesh(*cavity, options.adaptivity, progress) : Mesh{};
+    Mesh surface = cavity ? extract_mesh(*cavity, options.adaptivity, progress) : Mesh{};
     cavity.reset();
     clock.lap("cavity extraction");
+    return surface;
+}
 
-    // Strut surfaces lie deeper than the wall: with infill only shallow vertices move.
-    const OffsetSnap snap =
-        options.closing == 0.0 && options.infill.cell == 0.0 ? OffsetSnap::exact : OffsetSnap::at_least;
-    const SnapStats snapped =
-        snap_to_offset(cavity_surface, outer, *solid.closest_triangle, options.wall, snap, progress);
-    result.min_wall_at_vertices = snapped.min_depth;
-    clock.lap("snap");
-
-    // Keep the voids large enough, fill the others. Solid left floating in a
-    // void (where the opening closes around a pocket) would print loose: it
-    // becomes void, and so does any void inside it.
-    const std::vector<CavityRegion> regions = split_cavity_regions(cavity_surface);
+//! The voids large enough to keep, as indices into `regions`; the others are
+//! filled (their volumes go to the result's filled_cavity_volumes). Solid
+//! left floating in a void (where the opening closes around a pocket) would
+//! print loose: it becomes void, and so does any void inside it (a warning
+//! counts those pieces).
+std::vector<size_t> voids_kept(const std::vector<CavityRegion>& regions, const HollowOptions& options,
+                               HollowResult& result) {
     std::vector<size_t> open_regions;
     size_t islands = 0;
     double island_volume = 0.0;
@@ -247,11 +239,17 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
                 << " mm³) that the cavity left floating inside it, which would print loose";
         result.warnings.push_back(message.str());
     }
-    clock.lap("cavity regions");
+    return open_regions;
+}
 
-    // A void whose surface touches the outer one (where a repaired or
-    // resolved outer surface folds closer than the wall) is filled: the
-    // part keeps its wall there, and the hollowed mesh its separation.
+//! The surfaces of the kept voids that stay clear of the outer surface. A
+//! void whose surface touches the outer one (where a repaired or resolved
+//! outer surface folds closer than the wall) is filled: the part keeps its
+//! wall there, and the hollowed mesh its separation. Sets the result's
+//! cavity_volumes and adds to filled_cavity_volumes (with a warning).
+Mesh voids_clear_of(const Mesh& outer, const std::vector<CavityRegion>& regions,
+                    const std::vector<size_t>& open_regions, const HollowOptions& options, HollowResult& result,
+                    Progress& progress) {
     Mesh kept;
     std::vector<size_t> first_triangle;
     for (size_t r : open_regions) {
@@ -284,7 +282,38 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
                 << (touching_count == 1 ? "is" : "are") << " left solid";
         result.warnings.push_back(message.str());
     }
-    kept = std::move(clear);
+    return clear;
+}
+
+HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, const CentredFrame& frame,
+                             Progress& progress) {
+    openvdb::initialize();
+    HollowResult result;
+    StageClock clock(result.timings);
+    // With infill at most strut / 4 automatically, so a strut is four voxels across.
+    const double voxel = options.voxel_size > 0.0 ? options.voxel_size
+                         : options.infill.cell > 0.0
+                             ? std::min(automatic_hollow_voxel(options.wall), options.infill.strut / 4.0)
+                             : automatic_hollow_voxel(options.wall);
+    result.voxel_size = voxel;
+
+    Mesh outer = outer_surface(input, options, voxel, frame, result, clock, progress);
+    result.volume_solid = signed_volume(outer);
+
+    openvdb::Int32Grid::Ptr closest_triangle;
+    Mesh cavity_surface = cavity_before_snap(outer, options, voxel, result, clock, progress, closest_triangle);
+
+    // Strut surfaces lie deeper than the wall: with infill only shallow vertices move.
+    const OffsetSnap snap =
+        options.closing == 0.0 && options.infill.cell == 0.0 ? OffsetSnap::exact : OffsetSnap::at_least;
+    const SnapStats snapped = snap_to_offset(cavity_surface, outer, *closest_triangle, options.wall, snap, progress);
+    result.min_wall_at_vertices = snapped.min_depth;
+    clock.lap("snap");
+
+    const std::vector<CavityRegion> regions = split_cavity_regions(cavity_surface);
+    const std::vector<size_t> open_regions = voids_kept(regions, options, result);
+    clock.lap("cavity regions");
+    Mesh kept = voids_clear_of(outer, regions, open_regions, options, result, progress);
     clock.lap("separation check");
 
     result.mesh = std::move(outer);

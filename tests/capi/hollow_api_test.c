@@ -162,6 +162,18 @@ int main(void) {
     CHECK(fabvdb_ctx_set_memory_budget(ctx, 0) == FABVDB_OK);
     CHECK(hollowed == NULL);
 
+    /* A mesh read from a file is called by its path in messages, a level set
+       hollowed from one too (the budget refusal: before any work). */
+    const char* path = FABVDB_SHARED_DATA "/meshes/sphere.obj";
+    fabvdb_mesh* sphere = NULL;
+    CHECK(fabvdb_mesh_read(ctx, path, &sphere) == FABVDB_OK);
+    fabvdb_volume* sphere_shell = NULL;
+    CHECK(fabvdb_ctx_set_memory_budget(ctx, 64u << 20) == FABVDB_OK);
+    CHECK(fabvdb_mesh_hollow_volume(ctx, sphere, &options, &sphere_shell, NULL) == FABVDB_ERR_OUT_OF_BUDGET);
+    CHECK(strncmp(fabvdb_last_error(ctx), path, strlen(path)) == 0 && sphere_shell == NULL);
+    CHECK(fabvdb_ctx_set_memory_budget(ctx, 0) == FABVDB_OK);
+    fabvdb_mesh_free(sphere);
+
     int calls = 0;
     options.voxel_size = 1.0;
     CHECK(fabvdb_ctx_set_progress(ctx, cancel_on_second_stage, &calls) == FABVDB_OK);

@@ -92,7 +92,7 @@ for part in ball ring bunny; do
 done
 expect_no_file "$state/tasks/slow.json"
 expect_no_file "$WORK/out/slow/repaired.stl"
-if kill -0 "$(cat "$WORK/stopped")" 2>/dev/null; then fail "Slurm left the hanging command"; else passed=$((passed + 1)); fi
+if running "$(cat "$WORK/stopped")"; then fail "Slurm left the hanging command"; else passed=$((passed + 1)); fi
 expect_exit 0 "$FABVDB" batch --status "$state"
 expect_match "$STDOUT" 'slow: Slurm job .* TIMEOUT'
 expect_match "$(cat "$state/status.json")" '"message": "Slurm job [0-9_]* TIMEOUT (reason TimeLimit), no record"'
@@ -110,10 +110,11 @@ expect_match "$(wc -l < "$state/slurm/submissions.tsv")" '^7$'
 for part in ball ring bunny; do expect_exit 0 cmp "$WORK/$part.before" "$state/tasks/$part.json"; done
 expect_exit 0 test -f "$WORK/out/slow/hollow.stl"
 
-# Every daemon stops, by PID.
+# Every daemon stops, by PID (a zombie waiting for init to reap it has
+# stopped).
 pids="$(awk '{ print $2 }' "$slurm_dir/pids")"
 expect_exit 0 bash "$SOURCE/tests/slurm/local_slurm.sh" stop "$slurm_dir"
 for pid in $pids; do
-  if kill -0 "$pid" 2>/dev/null; then fail "daemon $pid still runs"; else passed=$((passed + 1)); fi
+  if running "$pid"; then fail "daemon $pid still runs"; else passed=$((passed + 1)); fi
 done
 finish

@@ -31,7 +31,7 @@ width, height = struct.unpack('>II', data[16:24])
 assert 50 <= width < height <= 1000, (width, height)
 PY
 done
-"$fabvdb" powder-sim "$work/out.stl" --holes "$work/r.json" --turns 3 --report "$work/s.json" --quiet \
+"$fabvdb" powder-sim "$work/out.stl" --holes-from "$work/r.json" --turns 3 --report "$work/s.json" --quiet \
     || fail "powder-sim exit $?"
 grep -q '"residual_fraction"' "$work/s.json" || fail "simulation report lacks residual_fraction"
 
@@ -41,7 +41,7 @@ grep -q '"residual_fraction"' "$work/s.json" || fail "simulation report lacks re
     --report "$work/r2.json" > "$work/drain.txt" 2>/dev/null || fail "drain (routine) exit $?"
 grep -q "cleaning routine" "$work/drain.txt" || fail "the routine is not printed"
 grep -q "as printed" "$work/drain.txt" || fail "the routine's first turn is not printed"
-"$fabvdb" powder-sim "$work/out2.stl" --holes "$work/r2.json" --routine "$work/r2.json" --report "$work/s2.json" \
+"$fabvdb" powder-sim "$work/out2.stl" --holes-from "$work/r2.json" --routine "$work/r2.json" --report "$work/s2.json" \
     --quiet || fail "powder-sim --routine exit $?"
 python3 - "$work/r2.json" "$work/s2.json" <<'PY' || fail "powder-sim did not replay the reported routine"
 import json, sys
@@ -55,11 +55,11 @@ assert 0 <= drain['routine_residual_fraction'] <= 1
 spread = drain['random_routines']
 assert spread['min_fraction'] <= spread['mean_fraction'] <= spread['max_fraction']
 PY
-"$fabvdb" powder-sim "$work/out2.stl" --holes "$work/r2.json" --routine "$work/r2.json" --turns 3 --quiet \
+"$fabvdb" powder-sim "$work/out2.stl" --holes-from "$work/r2.json" --routine "$work/r2.json" --turns 3 --quiet \
     2>/dev/null
 [ $? -eq 1 ] || fail "--routine with --turns: expected exit 1"
 echo '{"routine": [{"gravity": [0, 0]}]}' > "$work/badroutine.json"
-"$fabvdb" powder-sim "$work/out2.stl" --holes "$work/r2.json" --routine "$work/badroutine.json" --quiet 2>/dev/null
+"$fabvdb" powder-sim "$work/out2.stl" --holes-from "$work/r2.json" --routine "$work/badroutine.json" --quiet 2>/dev/null
 [ $? -eq 2 ] || fail "bad routine JSON: expected exit 2"
 
 # A part too thin for a cavity needs no holes: written solid, exit 0, a warning.
@@ -74,7 +74,7 @@ grep -q '"closed": true' "$work/solid-info.json" || fail "the solid part is not 
 grep -q '"components": 1' "$work/solid-info.json" || fail "the solid part is not one shell"
 
 echo '{"holes": [{"center": [0, 0]}]}' > "$work/bad.json"
-"$fabvdb" powder-sim "$work/out.stl" --holes "$work/bad.json" --quiet 2>/dev/null
+"$fabvdb" powder-sim "$work/out.stl" --holes-from "$work/bad.json" --quiet 2>/dev/null
 [ $? -eq 2 ] || fail "bad holes JSON: expected exit 2"
 "$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --target 150% --quiet 2>/dev/null
 [ $? -eq 1 ] || fail "--target 150%: expected exit 1"
@@ -88,7 +88,7 @@ echo '{"holes": [{"center": [0, 0]}]}' > "$work/bad.json"
 grep -q "patch_count must be >= 10" "$work/err" || fail "--patches 5: the message does not name the range"
 "$fabvdb" drain "$data/meshes/sphere.obj" -o "$work/never.stl" --repose 95deg --quiet 2>/dev/null
 [ $? -eq 1 ] || fail "--repose 95deg: expected exit 1"
-"$fabvdb" powder-sim "$work/out.stl" --holes "$work/r.json" --turns 0 --quiet 2>/dev/null
+"$fabvdb" powder-sim "$work/out.stl" --holes-from "$work/r.json" --turns 0 --quiet 2>/dev/null
 [ $? -eq 1 ] || fail "powder-sim --turns 0: expected exit 1"
 [ ! -e "$work/never.stl" ] || fail "a failed drain left an output"
 echo ok

@@ -3,6 +3,8 @@
 # $3 the source folder. `expect_exit CODE CMD...` runs CMD, keeps its stderr in
 # $STDERR and stdout in $STDOUT, and counts a pass when the exit code is CODE;
 # `expect_match TEXT PATTERN` and `expect_no_file PATH` check outputs;
+# `running PID` tells whether a process exists and is not a zombie (a child
+# of a process that ended waits as one until init reaps it);
 # `finish` prints "N passed, N failed" and exits non-zero on a failure.
 set -u
 FABVDB="$1"
@@ -50,6 +52,12 @@ expect_no_file() {
   else
     passed=$((passed + 1))
   fi
+}
+
+running() {
+  local state
+  state=$(sed -n 's/^.*) \([A-Za-z]\).*/\1/p' "/proc/$1/stat" 2>/dev/null)
+  [ -n "$state" ] && [ "$state" != Z ] && [ "$state" != X ]
 }
 
 finish() {

@@ -15,7 +15,7 @@ expect_exit 0 "$FABVDB" repair "$SPHERE" --fit 40mm --resolution 60 -o "$WORK/re
 expect_exit 0 "$FABVDB" hollow "$SPHERE" --fit 40mm --wall 3mm -o "$WORK/hollow.stl" --report "$WORK/hollow.json" --quiet
 expect_exit 0 "$FABVDB" drain "$WORK/hollow.stl" --holes 2 --patches 300 -o "$WORK/drained.stl" \
   --report "$WORK/drain.json" --quiet
-expect_exit 0 "$FABVDB" powder-sim "$WORK/drained.stl" --holes "$WORK/drain.json" --turns 2 \
+expect_exit 0 "$FABVDB" powder-sim "$WORK/drained.stl" --holes-from "$WORK/drain.json" --turns 2 \
   --report "$WORK/powder-sim.json" --quiet
 expect_exit 0 "$FABVDB" decompose "$SPHERE" --fit 40mm --low-res 800 --smoothing 1 -o "$WORK/decomposition" \
   --report "$WORK/decompose.json" --quiet

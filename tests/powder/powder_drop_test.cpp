@@ -61,7 +61,8 @@ PowderSamples drop(const openvdb::FloatGrid& cavity, const Mesh& surface, const 
                    size_t max_samples) {
     const SurfaceRayCaster caster(surface);
     fabvdb::Progress progress;
-    return fabvdb::powder::drop_cavity_powder(cavity, patch_per_triangle(), caster, flow, max_samples, progress);
+    return fabvdb::powder::drop_cavity_powder(cavity, patch_per_triangle(), caster, flow, max_samples, "room.stl",
+                                              progress);
 }
 
 void expect_bad_input(const std::function<void()>& call, const std::string& text) {
@@ -136,7 +137,8 @@ TEST(PowderDrop, RefusesAnEmptyCavityAndOneWhoseDropsMissTheSurface) {
     // A surface far from the cavity: every drop misses it.
     const Mesh elsewhere = fabvdb::test::make_box({100, 100, 100}, {101, 101, 101});
     const auto cavity = fabvdb::test::box(room_lo, room_hi, voxel);
-    expect_bad_input([&] { drop(*cavity, elsewhere, falling_down(identity(12)), 1000); }, "holds no powder sample");
+    expect_bad_input([&] { drop(*cavity, elsewhere, falling_down(identity(12)), 1000); },
+                     "room.stl: its cavity holds no powder sample");
 }
 
 TEST(PowderDrop, CancelledRunThrowsCancelled) {
@@ -147,7 +149,7 @@ TEST(PowderDrop, CancelledRunThrowsCancelled) {
     fabvdb::Progress cancelled(nullptr, nullptr, &cancel);
     try {
         fabvdb::powder::drop_cavity_powder(*cavity, patch_per_triangle(), caster, falling_down(identity(12)), 1000,
-                                           cancelled);
+                                           "room.stl", cancelled);
         FAIL() << "no exception";
     } catch (const fabvdb::Error& e) {
         EXPECT_EQ(e.status(), FABVDB_ERR_CANCELLED);

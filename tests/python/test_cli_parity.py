@@ -63,9 +63,9 @@ def test_drain(tmp_path, sphere_path):
 def test_powder_sim(tmp_path, sphere_path):
     cli("drain", sphere_path, "--scale", 20, "-o", tmp_path / "drained.stl", "--holes", 2, "--patches", 300,
         "--report", tmp_path / "drain.json")
-    cli("powder-sim", tmp_path / "drained.stl", "--holes", tmp_path / "drain.json", "--turns", 3, "--voxel", "1mm",
+    cli("powder-sim", tmp_path / "drained.stl", "--holes-from", tmp_path / "drain.json", "--turns", 3, "--voxel", "1mm",
         "--report", tmp_path / "cli.json")
-    report = fabvdb.powder_sim(tmp_path / "drained.stl", holes=tmp_path / "drain.json", turns=3, voxel="1mm")
+    report = fabvdb.powder_sim(tmp_path / "drained.stl", holes_from=tmp_path / "drain.json", turns=3, voxel="1mm")
     expected = json.loads((tmp_path / "cli.json").read_text())
     for key in ("initial_volume", "residual_volume", "residual_fraction", "routine", "voxel_size"):
         assert report[key] == expected[key]

@@ -165,17 +165,17 @@ def test_drain_heatmap_per_vertex(drained):
 
 
 def test_powder_sim_from_a_drain_result(drained):
-    report = fabvdb.powder_sim(drained.mesh, holes=drained, routine=drained, voxel="1mm")
+    report = fabvdb.powder_sim(drained.mesh, holes_from=drained, routine=drained, voxel="1mm")
     assert 0.0 <= report["residual_fraction"] <= 1.0
     cavity = 4.0 / 3.0 * np.pi * 17.0 ** 3
     assert report["initial_volume"] == pytest.approx(cavity, rel=0.1)
     with pytest.raises(fabvdb.InvalidArgumentError, match="routine replays"):
-        fabvdb.powder_sim(drained.mesh, holes=drained, routine=drained, turns=3)
+        fabvdb.powder_sim(drained.mesh, holes_from=drained, routine=drained, turns=3)
 
 
 def test_powder_sim_bad_holes(drained):
     with pytest.raises(fabvdb.BadInputError):
-        fabvdb.powder_sim(drained.mesh, holes={"nothing": []})
+        fabvdb.powder_sim(drained.mesh, holes_from={"nothing": []})
 
 
 DECOMPOSE = dict(shell="3mm", parts=2, low_res=1500)

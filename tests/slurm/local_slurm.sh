@@ -39,15 +39,25 @@ free_port() {
   echo "$port"
 }
 
+# Whether process PID still runs: it exists and is not a zombie. The daemons'
+# parent, this script's shell, is gone when they stop, so they wait as
+# zombies until the machine's init reaps them (in a container, whenever it
+# gets to it).
+running() {
+  local state
+  state=$(sed -n 's/^.*) \([A-Za-z]\).*/\1/p' "/proc/$1/stat" 2>/dev/null)
+  [ -n "$state" ] && [ "$state" != Z ] && [ "$state" != X ]
+}
+
 stop_all() {
   [ -f "$dir/pids" ] || return 0
   local pid name
   # Stop in reverse order of start: slurmd, slurmctld, munged.
   tac "$dir/pids" | while read -r name pid; do
-    if kill -0 "$pid" 2>/dev/null; then
+    if running "$pid"; then
       kill -TERM "$pid" 2>/dev/null
-      for _ in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-      if kill -0 "$pid" 2>/dev/null; then
+      for _ in $(seq 1 100); do running "$pid" || break; sleep 0.1; done
+      if running "$pid"; then
         echo "local_slurm: $name ($pid) did not stop on SIGTERM; killing it" >&2
         kill -KILL "$pid" 2>/dev/null
       fi

@@ -158,6 +158,22 @@ static void reap(scheduler* s) {
     }
 }
 
+/* Phase 2: waits for a child to end, an interruption or a second; on the
+ * first interruption every running task is sent SIGTERM. Returns whether
+ * there may be children to reap. */
+static int wait_for_signal(scheduler* s, const sigset_t* signals) {
+    batch_progress_draw(&s->progress);
+    const struct timespec second = {1, 0};
+    const int signal_number = sigtimedwait(signals, NULL, &second);
+    if (signal_number != SIGINT && signal_number != SIGTERM) return 1;
+    if (!s->cancelled) {
+        s->cancelled = 1;
+        for (int k = 0; k < s->jobs; ++k)
+            if (s->slots[k].state == SLOT_RUNNING) kill(s->slots[k].run.pid, SIGTERM);
+    }
+    return 0;
+}
+
 int batch_run_local(const batch_plan* plan, const int* todo, int todo_count, int skipped,
                     const batch_local_options* options) {
     scheduler s;
@@ -187,19 +203,7 @@ int batch_run_local(const batch_plan* plan, const int* todo, int todo_count, int
     for (;;) {
         start_what_fits(&s);
         if (finished(&s)) break;
-        /* Phase 2: a child ended, an interruption, or a second passed. */
-        batch_progress_draw(&s.progress);
-        const struct timespec second = {1, 0};
-        const int signal_number = sigtimedwait(&signals, NULL, &second);
-        if (signal_number == SIGINT || signal_number == SIGTERM) {
-            if (!s.cancelled) {
-                s.cancelled = 1;
-                for (int k = 0; k < s.jobs; ++k)
-                    if (s.slots[k].state == SLOT_RUNNING) kill(s.slots[k].run.pid, SIGTERM);
-            }
-            continue;
-        }
-        reap(&s);
+        if (wait_for_signal(&s, &signals)) reap(&s);
     }
     for (int k = 0; k < s.jobs; ++k)
         if (s.slots[k].state != SLOT_FREE) batch_task_free(&s.slots[k].run);

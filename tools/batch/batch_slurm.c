@@ -177,6 +177,26 @@ static int run_sbatch(const batch_slurm_options* options, const submission_files
     return CLI_EXIT_OK;
 }
 
+/* Phase 4: appends every submitted task to STATE/slurm/submissions.tsv (job,
+ * array index, task), which explains a task without a record later. */
+static int note_submission(const batch_plan* plan, const int* todo, int todo_count, const submission_files* files,
+                           const char* job) {
+    char path[8192];
+    snprintf(path, sizeof path, "%s/submissions.tsv", files->folder);
+    FILE* out = fopen(path, "a");
+    int failed = !out;
+    if (out) {
+        for (int k = 0; k < todo_count; ++k)
+            fprintf(out, "%s\t%d\t%s\n", job, k / files->chunk, plan->tasks[todo[k]].name);
+        failed = fclose(out) != 0;
+    }
+    if (failed) {
+        status_print("batch", FABVDB_ERR_IO, "%s: cannot note the submission of job %s", path, job);
+        return cli_exit_code(FABVDB_ERR_IO);
+    }
+    return CLI_EXIT_OK;
+}
+
 int batch_slurm_submit(const batch_plan* plan, const int* todo, int todo_count, const batch_slurm_options* options,
                        char* job, size_t job_size) {
     job[0] = 0;
@@ -196,20 +216,8 @@ int batch_slurm_submit(const batch_plan* plan, const int* todo, int todo_count, 
     }
     char array[64];
     code = run_sbatch(options, &files, array, sizeof array, job, job_size);
+    if (!code) code = note_submission(plan, todo, todo_count, &files, job);
     if (code) return code;
-    /* Phase 4: every submitted task in submissions.tsv (appended). */
-    snprintf(path, sizeof path, "%s/submissions.tsv", files.folder);
-    FILE* out = fopen(path, "a");
-    int failed = !out;
-    if (out) {
-        for (int k = 0; k < todo_count; ++k)
-            fprintf(out, "%s\t%d\t%s\n", job, k / files.chunk, plan->tasks[todo[k]].name);
-        failed = fclose(out) != 0;
-    }
-    if (failed) {
-        status_print("batch", FABVDB_ERR_IO, "%s: cannot note the submission of job %s", path, job);
-        return cli_exit_code(FABVDB_ERR_IO);
-    }
     if (!options->quiet)
         fprintf(stderr, "batch: submitted %d task(s) as Slurm job array %s (indices %s, %d task(s) per index)\n",
                 todo_count, job, array + strlen("--array="), files.chunk);

@@ -181,17 +181,7 @@ static void clear_progress_line(void) {
 
 int cli_fail(const cli_run* run, fabvdb_status status) {
     clear_progress_line();
-    const char* message = fabvdb_last_error(run->ctx);
-    /* The library calls a mesh it was handed by a generic name, not by its
-       file: put the input file's path in its place. */
-    static const char* const generic[] = {"mesh: ", "input: ", "part: ", "volume: "};
-    const char* input = run->positional_count > 0 ? run->positional[0] : NULL;
-    for (size_t i = 0; input && i < sizeof(generic) / sizeof(generic[0]); ++i)
-        if (strncmp(message, generic[i], strlen(generic[i])) == 0) {
-            status_print(run->command->name, status, "%s: %s", input, message + strlen(generic[i]));
-            return cli_exit_code(status);
-        }
-    status_print(run->command->name, status, "%s", message);
+    status_print(run->command->name, status, "%s", fabvdb_last_error(run->ctx));
     return cli_exit_code(status);
 }
 
@@ -250,6 +240,24 @@ double cli_mesh_diagonal(const fabvdb_mesh* mesh) {
     mesh_bounds(mesh, lo, hi);
     for (int k = 0; k < 3; ++k) sum += (hi[k] - lo[k]) * (hi[k] - lo[k]);
     return sqrt(sum);
+}
+
+int cli_voxel_size(const cli_run* run, const fabvdb_mesh* mesh, double* voxel) {
+    *voxel = 0.0;
+    if (cli_get(run, "--voxel")->set) {
+        *voxel = cli_length_mm(run, "--voxel", cli_mesh_diagonal(mesh));
+        if (!(*voxel > 0.0)) return cli_usage_error(run, "--voxel must be a positive length");
+    }
+    if (cli_option_named(run->command, "--resolution", strlen("--resolution"), 0) && cli_get(run, "--resolution")->set) {
+        const double resolution = cli_get(run, "--resolution")->number;
+        if (!(resolution >= 8.0)) return cli_usage_error(run, "--resolution must be >= 8");
+        double lo[3], hi[3], longest = 0.0;
+        mesh_bounds(mesh, lo, hi);
+        for (int k = 0; k < 3; ++k)
+            if (hi[k] - lo[k] > longest) longest = hi[k] - lo[k];
+        *voxel = longest / resolution;
+    }
+    return CLI_EXIT_OK;
 }
 
 int cli_is_level_set_path(const char* path) {

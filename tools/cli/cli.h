@@ -123,6 +123,14 @@ int cli_read_input(const cli_run* run, const char* path, fabvdb_mesh** out);
  * length given in % is relative to. */
 double cli_mesh_diagonal(const fabvdb_mesh* mesh);
 
+/* The one rule of --voxel and --resolution, in every command that has them:
+ * --voxel LEN is the voxel edge, > 0 (a % is of the bounding-box diagonal);
+ * --resolution N (where the command has it) makes the voxel the mesh's
+ * longest bounding-box side / N, N >= 8; never both (cli_alternatives);
+ * neither leaves *voxel at 0, the command's own default. Returns
+ * CLI_EXIT_OK, or the usage error it printed. */
+int cli_voxel_size(const cli_run* run, const fabvdb_mesh* mesh, double* voxel);
+
 /* Writes the report to the --report path of the running command, if one was
  * given, and notes it. Returns CLI_EXIT_OK, or the exit code after printing the
  * error. The caller still owns (and frees) the report. */

@@ -19,7 +19,7 @@ static const cli_option options[] = {
     {"--thickness-map", 0, CLI_STRING, "MAP.ply", NULL,
      "write the surface coloured by wall thickness (PLY, viridis) and MAP.png, its legend"},
     {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size (default: the minimum wall / 4, at most 400 along the part); not with --resolution"},
-    {"--resolution", 0, CLI_INT, "N", NULL, "voxel = longest bounding-box side / N; not with --voxel"},
+    {"--resolution", 0, CLI_INT, "N", NULL, "voxel = longest bounding-box side / N (N >= 8); not with --voxel"},
     {"--fail-on", 0, CLI_STRING, "warn|fail", "fail", "the verdict that makes the exit code 5"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/check.md)"},
 };
@@ -137,23 +137,16 @@ static int run_check(cli_run* run) {
     const cli_value* build = cli_get(run, "--build-volume");
     if (build->given && !parse_build_volume(build->text, opts.build_volume))
         return cli_usage_error(run, "--build-volume takes XxYxZ sizes > 0 such as 250x210x220mm, not '%s'", build->text);
-    if (cli_get(run, "--resolution")->set) {
-        const double resolution = cli_get(run, "--resolution")->number;
-        if (!(resolution >= 1.0)) return cli_usage_error(run, "--resolution must be >= 1");
-        opts.resolution = (int)resolution;
-    }
     const cli_value* map = cli_get(run, "--thickness-map");
     if (map->given) opts.thickness_map_path = map->text;
 
     fabvdb_mesh* mesh = NULL;
     int code = cli_read_input(run, run->positional[0], &mesh);
     if (code != CLI_EXIT_OK) return code;
-    if (cli_get(run, "--voxel")->set) {
-        opts.voxel_size = cli_length_mm(run, "--voxel", cli_mesh_diagonal(mesh));
-        if (!(opts.voxel_size > 0.0)) {
-            fabvdb_mesh_free(mesh);
-            return cli_usage_error(run, "--voxel must be > 0");
-        }
+    code = cli_voxel_size(run, mesh, &opts.voxel_size);
+    if (code != CLI_EXIT_OK) {
+        fabvdb_mesh_free(mesh);
+        return code;
     }
     fabvdb_report* report = NULL;
     fabvdb_status status = fabvdb_mesh_check(run->ctx, mesh, &opts, &report);

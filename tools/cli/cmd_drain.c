@@ -120,11 +120,11 @@ static int run_drain(cli_run* run) {
     const double diagonal = cli_mesh_diagonal(mesh);
     drain.wall = cli_length_mm(run, "--wall", diagonal);
     drain.hole_diameter = cli_length_mm(run, "--hole-diameter", diagonal);
-    if (cli_get(run, "--voxel")->set) drain.voxel_size = cli_length_mm(run, "--voxel", diagonal);
-    if (cli_get(run, "--voxel")->set && !(drain.voxel_size > 0.0)) {
+    code = cli_voxel_size(run, mesh, &drain.voxel_size);
+    if (code != CLI_EXIT_OK) {
         fabvdb_mesh_free(mesh);
         free(orientations);
-        return cli_usage_error(run, "--voxel must be positive (leave it out for wall / 4)");
+        return code;
     }
 
     fabvdb_mesh* drilled = NULL;

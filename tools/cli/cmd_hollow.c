@@ -14,7 +14,7 @@ static const cli_option options[] = {
     {"--closing", 0, CLI_LENGTH, "LEN", "0mm",
      "closing distance: offset the cavity by -(wall+closing) then +closing, rounding it (PrusaSlicer's meaning)"},
     {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size (default: wall/4; the wall is snapped exactly anyway); not with --resolution"},
-    {"--resolution", 0, CLI_INT, "N", NULL, "voxel = longest bounding-box side / N; not with --voxel"},
+    {"--resolution", 0, CLI_INT, "N", NULL, "voxel = longest bounding-box side / N (N >= 8); not with --voxel"},
     {"--adaptivity", 0, CLI_NUMBER, "A", "0", "simplification of the cavity surface, 0 (none) to 1"},
     {"--min-cavity", 0, CLI_NUMBER, "MM3", "0", "fill voids smaller than this volume (mm^3)"},
     {"--infill", 0, CLI_STRING, "PATTERN", NULL, "fill the cavity with an open-cell lattice joined to the wall: gyroid"},
@@ -36,20 +36,10 @@ static int run_hollow(cli_run* run) {
     fabvdb_hollow_options_init(&opts);
     opts.wall = cli_length_mm(run, "--wall", diagonal);
     opts.closing = cli_length_mm(run, "--closing", diagonal);
-    if (cli_get(run, "--voxel")->set) {
-        opts.voxel_size = cli_length_mm(run, "--voxel", diagonal);
-        if (!(opts.voxel_size > 0.0)) {
-            fabvdb_mesh_free(mesh);
-            return cli_usage_error(run, "--voxel must be > 0");
-        }
-    }
-    if (cli_get(run, "--resolution")->set) {
-        const double resolution = cli_get(run, "--resolution")->number;
-        if (!(resolution >= 1.0)) {
-            fabvdb_mesh_free(mesh);
-            return cli_usage_error(run, "--resolution must be >= 1");
-        }
-        opts.resolution = (int)resolution;
+    code = cli_voxel_size(run, mesh, &opts.voxel_size);
+    if (code != CLI_EXIT_OK) {
+        fabvdb_mesh_free(mesh);
+        return code;
     }
     opts.adaptivity = cli_get(run, "--adaptivity")->number;
     opts.min_cavity_volume = cli_get(run, "--min-cavity")->number;

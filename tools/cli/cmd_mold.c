@@ -51,14 +51,17 @@ static int run_mold(cli_run* run) {
     if (code != CLI_EXIT_OK) return code;
     const double diagonal = cli_mesh_diagonal(mesh);
     options.margin = cli_length_mm(run, "--mold-margin", diagonal);
-    if (cli_get(run, "--voxel")->set) options.voxel_size = cli_length_mm(run, "--voxel", diagonal);
+    code = cli_voxel_size(run, mesh, &options.voxel_size);
+    if (code != CLI_EXIT_OK) {
+        fabvdb_mesh_free(mesh);
+        return code;
+    }
     if (cli_get(run, "--grid-step")->set) options.grid_step = cli_length_mm(run, "--grid-step", diagonal);
     if (cli_get(run, "--shell")->set) decompose.shell_thickness = cli_length_mm(run, "--shell", diagonal);
-    if (!(options.margin > 0) || (cli_get(run, "--voxel")->set && !(options.voxel_size > 0)) ||
-        (cli_get(run, "--grid-step")->set && !(options.grid_step > 0)) ||
+    if (!(options.margin > 0) || (cli_get(run, "--grid-step")->set && !(options.grid_step > 0)) ||
         (cli_get(run, "--shell")->set && !(decompose.shell_thickness > 0))) {
         fabvdb_mesh_free(mesh);
-        return cli_usage_error(run, "--mold-margin, --voxel, --grid-step and --shell must be positive");
+        return cli_usage_error(run, "--mold-margin, --grid-step and --shell must be positive");
     }
     fabvdb_report* report = NULL;
     fabvdb_status status = fabvdb_mesh_mold(run->ctx, mesh, decomposition->set ? decomposition->text : NULL,

@@ -1,4 +1,4 @@
-/* cmd_powder_sim.c — `fabvdb powder-sim IN --holes R.json`: the reference
+/* cmd_powder_sim.c — `fabvdb powder-sim IN --holes-from R.json`: the reference
  * powder simulation. Fills the cavity of IN (a hollow part, drilled or not)
  * with powder, opens the holes of a drain report, and runs sand-pile rules
  * through an operator's routine of turns; reports the powder left inside. */
@@ -12,7 +12,7 @@
 #include "orientation_file.h"
 
 static const cli_option options[] = {
-    {"--holes", 0, CLI_STRING, "R.json", NULL, "the holes: a `fabvdb drain` report (its holes[] array)"},
+    {"--holes-from", 0, CLI_STRING, "R.json", NULL, "the holes to open: a `fabvdb drain` report's holes[] array"},
     {"--orientations", 0, CLI_STRING, "all|FILE", "all", "the set later turns are drawn from (as for drain)"},
     {"--turns", 0, CLI_INT, "N", "10", "turns of the routine, the first (as printed, -z down) included"},
     {"--seed", 0, CLI_INT, "S", "1", "seed of the draws of the later turns"},
@@ -20,7 +20,7 @@ static const cli_option options[] = {
     {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "sand-pile cell size (default: diagonal / 150, at most a quarter hole)"},
     {"--routine", 0, CLI_STRING, "R.json", NULL,
      "replay exactly this routine: a drain report's routine[] (or an array of gravities)"},
-    {"--report", 0, CLI_STRING, "S.json", NULL, "also write every figure as JSON (keys: docs/powder-sim.md)"},
+    {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/powder-sim.md)"},
 };
 
 /* The whole file of an option, or NULL after printing why. */
@@ -31,8 +31,8 @@ static char* read_text(const cli_run* run, const char* path, const char* what) {
 }
 
 static int run_powder_sim(cli_run* run) {
-    const cli_value* holes_path = cli_get(run, "--holes");
-    if (!holes_path->set) return cli_usage_error(run, "--holes R.json is required");
+    const cli_value* holes_path = cli_get(run, "--holes-from");
+    if (!holes_path->set) return cli_usage_error(run, "--holes-from R.json is required");
     fabvdb_powder_options powder;
     fabvdb_powder_options_init(&powder);
     powder.turns = (int)cli_get(run, "--turns")->number;
@@ -65,10 +65,7 @@ static int run_powder_sim(cli_run* run) {
     powder.orientations = orientations;
     fabvdb_mesh* mesh = NULL;
     code = cli_read_input(run, run->positional[0], &mesh);
-    if (code == CLI_EXIT_OK && cli_get(run, "--voxel")->set) {
-        powder.voxel_size = cli_length_mm(run, "--voxel", 0.0);
-        if (!(powder.voxel_size > 0.0)) code = cli_usage_error(run, "--voxel must be a positive length in mm");
-    }
+    if (code == CLI_EXIT_OK) code = cli_voxel_size(run, mesh, &powder.voxel_size);
     fabvdb_report* report = NULL;
     fabvdb_status status = FABVDB_OK;
     if (code == CLI_EXIT_OK) status = fabvdb_powder_simulate(run->ctx, mesh, holes, &powder, &report);
@@ -98,7 +95,7 @@ static int run_powder_sim(cli_run* run) {
 const cli_command cmd_powder_sim = {
     "powder-sim",
     "simulate how much powder stays trapped in a drilled hollow part (reference check)",
-    "IN --holes R.json [--orientations all|FILE] [--turns N] [--seed S | --routine R.json] [--report S.json]",
+    "IN --holes-from R.json [--orientations all|FILE] [--turns N] [--seed S | --routine R.json] [--report FILE.json]",
     "Independent of the drainability model behind `fabvdb drain`: fills the cavity of IN with voxels of\n"
     "powder, opens the holes listed in R.json, and runs sand-pile rules with the angle of repose through\n"
     "a routine like an operator's: first as printed (-z down), then turns drawn with --seed from the\n"

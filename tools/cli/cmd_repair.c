@@ -10,8 +10,9 @@
 
 static const cli_option options[] = {
     {"--output", 'o', CLI_STRING, "OUT", NULL, "the repaired mesh (.stl .obj .ply .off .3mf), or the level set (.vdb)"},
-    {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size (e.g. 0.2mm, or 0.1% of the diagonal); not with --resolution"},
-    {"--resolution", 0, CLI_INT, "N", "400", "voxels along the longest bounding-box side (0.25 mm on a 100 mm part); not with --voxel"},
+    {"--voxel", 0, CLI_LENGTH, "LEN", NULL,
+     "voxel size (default: the longest bounding-box side / 400, 0.25 mm on a 100 mm part); not with --resolution"},
+    {"--resolution", 0, CLI_INT, "N", NULL, "voxel = longest bounding-box side / N (N >= 8); not with --voxel"},
     {"--adaptivity", 0, CLI_NUMBER, "A", "0", "extraction adaptivity 0..1: fewer triangles on flat regions"},
     {"--volumetric", 0, CLI_FLAG, NULL, NULL,
      "always re-mesh through the level set, even an input that is clean or fixable at mesh level"},
@@ -26,7 +27,6 @@ static int run_repair(cli_run* run) {
     if (!cli_get(run, "--output")->set) return cli_usage_error(run, "-o OUT is required");
     fabvdb_volume_options options;
     fabvdb_volume_options_init(&options);
-    options.resolution = (int)cli_get(run, "--resolution")->number;
     options.adaptivity = cli_get(run, "--adaptivity")->number;
     options.min_shell_volume = cli_get(run, "--min-shell-volume")->number;
     if (cli_get(run, "--no-snap")->given) options.flags |= FABVDB_REPAIR_NO_SNAP;
@@ -36,12 +36,10 @@ static int run_repair(cli_run* run) {
     int code = cli_read_input(run, run->positional[0], &mesh);
     if (code != CLI_EXIT_OK) return code;
     const double diagonal = cli_mesh_diagonal(mesh);
-    if (cli_get(run, "--voxel")->set) {
-        options.voxel_size = cli_length_mm(run, "--voxel", diagonal);
-        if (!(options.voxel_size > 0.0)) {
-            fabvdb_mesh_free(mesh);
-            return cli_usage_error(run, "--voxel must be positive");
-        }
+    code = cli_voxel_size(run, mesh, &options.voxel_size);
+    if (code != CLI_EXIT_OK) {
+        fabvdb_mesh_free(mesh);
+        return code;
     }
     if (cli_get(run, "--thicken")->set) {
         options.thicken = cli_length_mm(run, "--thicken", diagonal);

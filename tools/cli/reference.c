@@ -76,6 +76,13 @@ void reference_markdown_command(const cli_command* command) {
 
 static const cli_option_type unit_types[] = {CLI_LENGTH, CLI_ANGLE, CLI_SIZE};
 
+/* The rule of options that share a name (tests/tools/cli/cli_test.c checks
+ * the tables keep it; cli_voxel_size applies the voxel's). */
+static const char shared_names[] =
+    "An option's name means one thing, with one kind of value, in every command that has it. --voxel LEN is the "
+    "voxel edge (> 0; a % is of the bounding-box diagonal) and --resolution N makes it the longest bounding-box "
+    "side / N (N >= 8); without either, each command's default voxel is the one its --voxel line gives.";
+
 void reference_markdown_common(void) {
     printf("## Options of every command\n\n");
     markdown_option_rows(cli_common_options, cli_common_option_count);
@@ -83,6 +90,7 @@ void reference_markdown_common(void) {
            "default of one applies only when neither is given:\n\n");
     for (size_t i = 0; i < cli_alternative_count; ++i)
         printf("- `%s` or `%s`\n", cli_alternatives[i][0], cli_alternatives[i][1]);
+    printf("\n%s\n", shared_names);
     printf("\n## Values with units\n\n| value | written as |\n|---|---|\n");
     printf("| `LEN` | %s; a bare number is millimetres |\n", cli_type_hint(CLI_LENGTH));
     printf("| `ANGLE` | %s; a bare number is degrees |\n", cli_type_hint(CLI_ANGLE));
@@ -180,6 +188,9 @@ void reference_man_page(const cli_command* const* commands, size_t count) {
         roff_text(cli_alternatives[i][1]);
         putchar('\n');
     }
+    printf(".PP\n");
+    roff_text(shared_names);
+    putchar('\n');
     printf(".SH UNITS\n");
     static const char* const names[] = {"LEN", "ANGLE", "SIZE"};
     static const char* const bare[] = {"millimetres", "degrees", "bytes"};

@@ -1,7 +1,9 @@
 /* cli_test.c — tools/cli/cli.c beyond what the command-line tests see:
  * values with units, options found by name, the one rule for options that
  * set one thing two ways (--voxel or --resolution, --scale or --fit: never
- * both, in every command that has both), warnings printed from a report
+ * both, in every command that has both), one meaning for an option name
+ * across commands, the one rule of --voxel and --resolution, warnings
+ * printed from a report
  * through the report API, and --save-job's file read back. */
 #define _GNU_SOURCE /* mkdtemp, nftw */
 #include <math.h>
@@ -59,6 +61,79 @@ static void check_alternatives(void) {
     char* one[] = {"repair", "missing.stl", "-o", "out.stl", "--voxel", "1mm"};
     CHECK(run(&cmd_repair, 6, one, err, sizeof err) == CLI_EXIT_BAD_INPUT);
     CHECK(strstr(err, "not both") == NULL);
+}
+
+/* Options that share a name across commands share their kind of value: the
+ * same type, short name and value name. Only -o/--output names a file in
+ * some commands and a folder in others (OUT, OUTDIR, DIR): the command's
+ * result either way. */
+static void check_shared_names(void) {
+    for (size_t a = 0; a < fabvdb_command_count; ++a)
+        for (size_t b = a + 1; b < fabvdb_command_count; ++b)
+            for (size_t i = 0; i < fabvdb_commands[a]->option_count; ++i) {
+                const cli_option* one = &fabvdb_commands[a]->options[i];
+                const cli_option* other =
+                    cli_option_named(fabvdb_commands[b], one->name, strlen(one->name), 0);
+                if (!other) continue;
+                const int same_value = (!one->value_name && !other->value_name) ||
+                                       (one->value_name && other->value_name &&
+                                        strcmp(one->value_name, other->value_name) == 0) ||
+                                       strcmp(one->name, "--output") == 0;
+                if (one->type != other->type || one->short_name != other->short_name || !same_value) {
+                    fprintf(stderr, "%s of %s and of %s differ\n", one->name, fabvdb_commands[a]->name,
+                            fabvdb_commands[b]->name);
+                    CHECK(0);
+                }
+            }
+}
+
+/* --voxel and --resolution against a box 100 x 50 x 20 mm: the voxel from
+ * either, a % of the diagonal, the bounds, and neither (0: the default). */
+static void check_voxel_size(void) {
+    const double vertices[] = {0, 0, 0, 100, 0, 0, 0, 50, 0, 0, 0, 20};
+    const uint32_t triangles[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    fabvdb_ctx* ctx = NULL;
+    CHECK(fabvdb_ctx_new(&ctx) == FABVDB_OK);
+    fabvdb_mesh* mesh = NULL;
+    CHECK(fabvdb_mesh_new(ctx, vertices, 4, triangles, 4, &mesh) == FABVDB_OK);
+    const double diagonal = sqrt(100.0 * 100.0 + 50.0 * 50.0 + 20.0 * 20.0);
+    const struct {
+        const cli_command* command;
+        const char* option;
+        const char* value;
+        int code;
+        double voxel;
+    } cases[] = {
+        {&cmd_hollow, "--resolution", "50", CLI_EXIT_OK, 2.0},   {&cmd_repair, "--resolution", "200", CLI_EXIT_OK, 0.5},
+        {&cmd_check, "--resolution", "1000", CLI_EXIT_OK, 0.1},  {&cmd_check, "--resolution", "7", CLI_EXIT_USAGE, 0},
+        {&cmd_repair, "--voxel", "0.3mm", CLI_EXIT_OK, 0.3},     {&cmd_powder_sim, "--voxel", "1%", CLI_EXIT_OK, 0},
+        {&cmd_drain, "--voxel", "0mm", CLI_EXIT_USAGE, 0},       {&cmd_mold, "--voxel", NULL, CLI_EXIT_OK, 0},
+        {&cmd_repair, "--resolution", NULL, CLI_EXIT_OK, 0},
+    };
+    char path[4096];
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        cli_run run;
+        memset(&run, 0, sizeof run);
+        run.command = cases[i].command;
+        run.ctx = ctx;
+        cli_value* value = (cli_value*)cli_get(&run, cases[i].option);
+        if (cases[i].value) {
+            value->set = value->given = 1;
+            value->text = cases[i].value;
+            CHECK(cli_parse_value(cli_option_named(run.command, cases[i].option, strlen(cases[i].option), 0)->type,
+                                  cases[i].value, &value->number, &value->relative) == 0);
+        }
+        double voxel = -1;
+        const int saved = temp_stderr_begin(temp_path(path, folder, "voxel"));
+        const int code = cli_voxel_size(&run, mesh, &voxel);
+        temp_stderr_end(saved);
+        const double wanted = strcmp(cases[i].value ? cases[i].value : "", "1%") == 0 ? 0.01 * diagonal
+                                                                                     : cases[i].voxel;
+        CHECK(code == cases[i].code);
+        if (code == CLI_EXIT_OK) CHECK(fabs(voxel - wanted) < 1e-12);
+    }
+    fabvdb_mesh_free(mesh);
+    fabvdb_ctx_free(ctx);
 }
 
 static void check_warnings(void) {
@@ -132,6 +207,8 @@ int main(void) {
     CHECK(temp_folder_make(folder) == 0);
     check_values();
     check_alternatives();
+    check_shared_names();
+    check_voxel_size();
     check_warnings();
     check_save_job();
     temp_folder_remove(folder);
