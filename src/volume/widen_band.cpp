@@ -79,15 +79,15 @@ openvdb::FloatGrid::Ptr widen_band(const openvdb::FloatGrid& grid, int interior,
     // The voxels given a closest point last (at first the seeds): their
     // neighbours without one are the next layer's candidates, the band's
     // own (which keep their values) and new ones within the widths. Layer k
-    // takes those within 1.5 + k voxels of their point, in order of
+    // takes those within 2.5 + k voxels of their point, in order of
     // distance like a bucketed Dijkstra; the others wait (and are asked
     // again), so that a voxel reached first across a diagonal does not keep
     // a point sideways of it before its nearer neighbours have theirs.
     openvdb::MaskTree frontier(closest, false, openvdb::TopologyCopy());
     openvdb::MaskTree waiting(false);
-    const int layers = std::max(interior, exterior) + 4;
+    const int widest = std::max(interior, exterior), layers = widest + 4;
     for (int layer = 0; layer < layers; ++layer) {
-        const double accept = 1.5 + layer;
+        const double accept = 2.5 + layer;
         openvdb::MaskTree fresh(frontier);
         openvdb::tools::dilateActiveValues(fresh, 1, openvdb::tools::NN_FACE_EDGE_VERTEX,
                                            openvdb::tools::IGNORE_TILES);
@@ -154,7 +154,9 @@ openvdb::FloatGrid::Ptr widen_band(const openvdb::FloatGrid& grid, int interior,
                 ++added;
             }
         progress.update(double(layer + 1) / double(layers));
-        if (added + waits == 0) break;
+        // Past the widths with none waiting, the next layer would only
+        // find the odd voxel a hair inside them, across a diagonal.
+        if (added + waits == 0 || (waits == 0 && accept >= widest)) break;
     }
     openvdb::tools::changeAsymmetricLevelSetBackground(tree, outside, -inside);
     openvdb::tools::signedFloodFillWithValues(tree, outside, -inside);
