@@ -884,9 +884,9 @@ typedef struct fabvdb_check_options {
     double up[3];                /* the build direction in the part's frame, need not be
                                     unit; default 0 0 1 */
     double build_volume[3];      /* the printer's build volume, mm; default 0 0 0: not checked */
-    double voxel_size;           /* mm, >= 0; 0 (default): the larger of the process' minimum
-                                    wall / 4 and the longest side / resolution */
-    int resolution;              /* >= 1; voxels along the longest side that bound the
+    double voxel_size;           /* mm, >= 0; 0 (default): the longest side / resolution,
+                                    kept between the process' minimum wall / 4 and / 2 */
+    int resolution;              /* >= 1; voxels along the longest side that set the
                                     automatic voxel size; default 400 */
     const char* thickness_map_path; /* NULL (default), or a .ply file that receives the part's
                                     surface coloured by local wall thickness (a `quality`

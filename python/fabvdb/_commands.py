@@ -156,8 +156,8 @@ def check(mesh, *, process="sla", up="+z", build_volume=None, voxel=None, resolu
 
     process: "sla" (resin), "powder" (SLS, MJF, binder jetting), "fdm", or a JSON profile's path (docs/check.md).
     up: the build direction, "+x" ... "-z" or three numbers. build_volume: the printer's, three lengths or
-    "250x210x220mm" (None: not checked). voxel: a length (default: the process' minimum wall / 4, no finer
-    than the longest side / resolution). thickness_map: a .ply path that receives the surface coloured by
+    "250x210x220mm" (None: not checked). voxel: a length (default: the longest side / resolution, kept
+    between the process' minimum wall / 4 and / 2). thickness_map: a .ply path that receives the surface coloured by
     local wall thickness, with its legend beside it. Keys (docs/check.md): verdict ("pass", "warn" or
     "fail"), process, voxel_size, checks {mesh, units, wall_thickness, small_features, holes,
     trapped_volumes, overhangs, build_volume}, each with status, message and figures in mm. A part that

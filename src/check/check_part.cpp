@@ -7,7 +7,6 @@
 #include <map>
 
 #include <Eigen/Eigenvalues>
-#include <openvdb/tools/FastSweeping.h>
 
 #include "check/build_fit.h"
 #include "check/overhang_triangles.h"
@@ -23,6 +22,7 @@
 #include "volume/local_thickness.h"
 #include "volume/mesh_shells.h"
 #include "volume/signed_distance.h"
+#include "volume/widen_band.h"
 
 namespace fabvdb::check {
 
@@ -33,6 +33,13 @@ const char* const status_names[] = {"pass", "warn", "fail"};
 
 //! Regions listed per check, the largest first; the rest are counted.
 constexpr size_t kListedRegions = 20;
+
+//! The automatic voxel, as a share of the minimum wall: never coarser than
+//! half of it (a wall at the minimum spans two voxels, one at half of it
+//! still holds a voxel centre, so it cannot vanish), never finer than a
+//! quarter; between the two, the longest side / resolution (docs/check.md).
+constexpr double kCoarsestVoxel = 0.5;
+constexpr double kFinestVoxel = 0.25;
 
 std::string mm(double value) {
     char text[32];
@@ -397,9 +404,16 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     double longest = 0.0;
     for (int k = 0; k < 3; ++k) longest = std::max(longest, box.max[k] - box.min[k]);
     double voxel = options.voxel_size;
-    if (!(voxel > 0.0)) voxel = std::max(p.min_wall / 4.0, longest / std::max(options.resolution, 1));
-    const double wall_reach = std::max(p.min_wall, p.min_pin) * (1.0 + p.margin_fraction);
-    const double gap_reach = p.min_hole * (1.0 + p.margin_fraction);
+    if (!(voxel > 0.0))
+        voxel = std::clamp(longest / std::max(options.resolution, 1), kFinestVoxel * p.min_wall,
+                           kCoarsestVoxel * p.min_wall);
+    // The thickest reading a check needs is its warning limit: the walks
+    // climb to half that (a radius), to the whole for a heat map, whose
+    // colours run to twice the limit.
+    const double wall_limit = std::max(p.min_wall, p.min_pin) * (1.0 + p.margin_fraction);
+    const double gap_limit = p.min_hole * (1.0 + p.margin_fraction);
+    const double wall_radius = options.thickness_map.empty() ? 0.5 * wall_limit : wall_limit;
+    const double gap_radius = 0.5 * gap_limit;
     volume::SignedDistanceOptions sdf;
     sdf.voxel_size = voxel;
     sdf.memory_budget_bytes = options.memory_budget_bytes;
@@ -407,15 +421,11 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     volume::SignedDistanceStats stats;
     openvdb::FloatGrid::Ptr grid = volume::signed_distance_from_mesh(mesh, sdf, progress, &stats);
     clock.add_laps(stats.timings);
-    // The walks need the band to reach past the largest minimum on both
-    // sides; fast sweeping widens it (the eikonal solution, exact for the
-    // plane branches the ridge fit relies on) far quicker than a wider
-    // band from the mesh.
-    const int reach = int(std::ceil(std::max(wall_reach, gap_reach) / voxel)) + 5;
-    if (reach > sdf.half_band_voxels) {
-        progress.stage("widen band");
-        grid = openvdb::tools::dilateSdf(*grid, reach - sdf.half_band_voxels, openvdb::tools::NN_FACE_EDGE_VERTEX);
-        progress.check();
+    // Each walk's side of the band reaches its radius and the ridge fit's
+    // samples beyond it (local_thickness.h), the other side those samples.
+    const int interior = int(std::ceil(wall_radius / voxel)) + 5, exterior = int(std::ceil(gap_radius / voxel)) + 5;
+    if (std::max(interior, exterior) > sdf.half_band_voxels) {
+        grid = volume::widen_band(*grid, interior, exterior, progress);
         clock.lap("widen band");
     }
 
@@ -428,10 +438,10 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     checks["units"] = units_check(box, solid_volume);
 
     const volume::LocalThickness walls =
-        volume::local_thickness(*grid, surface.vertices, volume::ThicknessSide::solid, wall_reach, progress);
+        volume::local_thickness(*grid, surface.vertices, volume::ThicknessSide::solid, wall_radius, progress);
     clock.lap("wall thickness");
     const volume::LocalThickness gaps =
-        volume::local_thickness(*grid, surface.vertices, volume::ThicknessSide::gap, gap_reach, progress);
+        volume::local_thickness(*grid, surface.vertices, volume::ThicknessSide::gap, gap_radius, progress);
     clock.lap("gap width");
 
     checks["wall_thickness"] = wall_check(surface, walls, p);
@@ -448,7 +458,7 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
         const std::string& path = options.thickness_map;
         const std::string stem =
             path.size() > 4 && path.compare(path.size() - 4, 4, ".ply") == 0 ? path.substr(0, path.size() - 4) : path;
-        const double top = 2.0 * wall_reach;
+        const double top = 2.0 * wall_limit;
         powder::write_heatmap_ply(surface, walls.thickness, 0.0, top, "local wall thickness, mm", path, false);
         write_colour_bar_png(stem + ".png", "wall thickness", 0.0, top, "mm");
         checks["wall_thickness"]["map"] = {{"path", path}, {"legend", stem + ".png"}, {"min", 0.0}, {"max", top}};

@@ -19,8 +19,9 @@
 //!  - overhangs: surface needing support with `up` as the build direction;
 //!  - build_volume: whether the part fits, as placed or turned (build_fit.h).
 //! The verdict is the worst status. Costs the signed distance with a band as
-//! wide as the largest minimum, one extraction and two walks per surface
-//! vertex; errors as signed_distance_from_mesh (OUT_OF_BUDGET, BAD_INPUT for a
+//! deep on each side as its walk's reach (half its warning limit), the narrow
+//! band widened by closest points (widen_band.h), one extraction and two
+//! walks per surface vertex, most of them a single sample; errors as signed_distance_from_mesh (OUT_OF_BUDGET, BAD_INPUT for a
 //! mesh enclosing nothing), Error(IO) when the heat map cannot be written;
 //! reports progress, cancellable.
 #pragma once
@@ -42,9 +43,10 @@ struct CheckOptions {
     Vec3 up{0, 0, 1};
     //! The printer's build volume in mm; all zero: not checked.
     Vec3 build_volume{0, 0, 0};
-    //! Voxel size in mm; 0: the larger of min_wall / 4 and the longest side / `resolution`.
+    //! Voxel size in mm; 0: the longest side / `resolution`, kept between
+    //! min_wall / 4 and min_wall / 2.
     double voxel_size = 0.0;
-    //! Voxels along the longest side that bound the automatic voxel size.
+    //! Voxels along the longest side that set the automatic voxel size.
     int resolution = 400;
     //! A .ply path for the wall-thickness heat map (and STEM.png), or empty.
     std::string thickness_map;

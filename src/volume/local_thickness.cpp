@@ -1,8 +1,9 @@
 //! local_thickness: gradient ascent of the distance with trilinear samples and
 //! central differences in half-voxel steps (shorter ones, or a step towards
 //! the best neighbour, where a step along the gradient would not rise), then
-//! the ridge placed where the straight branches on either side of it meet.
-//! Parallel over points (TBB).
+//! the ridge placed where the straight branches on either side of it meet;
+//! one sample max_radius deep first, which caps most points. Parallel over
+//! points (TBB).
 #include "volume/local_thickness.h"
 
 #include <algorithm>
@@ -69,17 +70,33 @@ LocalThickness local_thickness(const openvdb::FloatGrid& grid, const std::vector
         openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler> sampler(
             accessor, grid.transform());
         const auto f = [&](const openvdb::Vec3d& p) { return sign * double(sampler.wsSample(p)); };
+        const auto gradient_at = [&](const openvdb::Vec3d& p) {
+            openvdb::Vec3d gradient;
+            for (int k = 0; k < 3; ++k) {
+                openvdb::Vec3d e(0.0);
+                e[k] = 0.5 * h;
+                gradient[k] = (f(p + e) - f(p - e)) / h;
+            }
+            return gradient;
+        };
         for (size_t i = range.begin(); i != range.end(); ++i) {
             openvdb::Vec3d x(points[i][0], points[i][1], points[i][2]);
             double value = f(x);
             openvdb::Vec3d direction(0.0);
-            for (int s = 0; s < max_steps && value < max_radius; ++s) {
-                openvdb::Vec3d gradient;
-                for (int k = 0; k < 3; ++k) {
-                    openvdb::Vec3d e(0.0);
-                    e[k] = 0.5 * h;
-                    gradient[k] = (f(x + e) - f(x - e)) / h;
+            openvdb::Vec3d gradient = gradient_at(x);
+            // Most of a part is thicker than the cap: a ball of max_radius
+            // fits straight along the first gradient, so the climb is one step.
+            if (value < max_radius && gradient.length() >= 0.2) {
+                const openvdb::Vec3d centre = x + (max_radius - value) * gradient.unitSafe();
+                if (f(centre) >= max_radius) {
+                    result.thickness[i] = 2.0 * max_radius;
+                    result.centre[i] = {centre[0], centre[1], centre[2]};
+                    result.capped[i] = 1;
+                    continue;
                 }
+            }
+            for (int s = 0; s < max_steps && value < max_radius; ++s) {
+                if (s > 0) gradient = gradient_at(x);
                 if (gradient.length() < 0.2) break;  // on the ridge, or off the band
                 // Along the gradient, shorter steps when a step would not
                 // rise; along a kink (a convex edge's or corner's bisector)

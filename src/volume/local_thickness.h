@@ -10,9 +10,11 @@
 //! convex edge the walk runs along the edge's bisector into the medial sheet
 //! and at a concave one into the fillet's larger ball, so neither reads thin.
 //! Walks stop at `max_radius`: a point there is reported 2·max_radius thick
-//! and flagged capped. The level set's band on that side must reach
-//! max_radius plus four voxels. Costs about 8 trilinear samples per half
-//! voxel climbed per point, in parallel; cancellable.
+//! and flagged capped, at once when a ball of max_radius fits along the
+//! first gradient (the sample max_radius deep reads at least max_radius).
+//! The level set's band on that side must reach max_radius plus four voxels.
+//! Costs 7 trilinear samples per capped point, else about 8 per half voxel
+//! climbed, in parallel; cancellable.
 #pragma once
 
 #include <cstdint>

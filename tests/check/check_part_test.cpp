@@ -4,8 +4,9 @@
 // region on a thick plate's edges), a pin of known diameter on a base, a
 // square channel of known width through a block, a sphere with a sealed
 // cavity (its volume against the construction's), the same part in mm and
-// in inches, overhangs of a floating box, the build volume, and the heat map
-// files. Expected figures come from the shapes' dimensions.
+// in inches, overhangs of a floating box, the build volume, the heat map
+// files, and the default voxel (a thin fin on a long part still seen).
+// Expected figures come from the shapes' dimensions.
 #include "check/check_part.h"
 
 #include <gtest/gtest.h>
@@ -143,6 +144,23 @@ TEST(CheckPart, OverhangsAndBuildVolume) {
     const nlohmann::json standing = run(box, "fdm", 0.5, {1, 0, 0}, {100, 100, 100});
     EXPECT_NEAR(standing["checks"]["build_volume"]["size"][2].get<double>(), 50.0, 1e-9);
     EXPECT_FALSE(run(box, "fdm", 0.5)["checks"].contains("build_volume"));
+}
+
+TEST(CheckPart, DefaultVoxelResolvesTheMinimumWall) {
+    // The longest side / 400, kept between a quarter and a half of the
+    // minimum wall (0.5 mm for resin, 0.8 mm for FDM).
+    EXPECT_DOUBLE_EQ(run(test::make_box({0, 0, 0}, {20, 4, 4}))["voxel_size"].get<double>(), 0.125);
+    EXPECT_DOUBLE_EQ(run(test::make_box({0, 0, 0}, {100, 4, 4}), "fdm")["voxel_size"].get<double>(), 0.25);
+    // A 200 mm part: 0.5 mm voxels would be the resin minimum itself; a fin
+    // of 0.3 mm on it is still seen at 0.25 mm: both its faces above the
+    // block (2 x 10 x 9 mm^2) read thin.
+    const Mesh fin = test::merged(test::make_box({0, 0, 0}, {200, 10, 3}), test::make_box({100.05, 0, 2}, {100.35, 10, 12}));
+    const nlohmann::json long_part = run(fin);
+    const nlohmann::json& walls = long_part["checks"]["wall_thickness"];
+    EXPECT_DOUBLE_EQ(long_part["voxel_size"].get<double>(), 0.25);
+    EXPECT_EQ(status(long_part, "wall_thickness"), "fail") << walls.dump();
+    EXPECT_LT(walls["min_thickness"].get<double>(), 0.5);
+    EXPECT_GT(walls["thin_area"].get<double>(), 0.8 * 180.0) << walls.dump();
 }
 
 TEST(CheckPart, ThicknessMapFiles) {

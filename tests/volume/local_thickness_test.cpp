@@ -2,7 +2,7 @@
 // (every point, its corners and edges included, measures the plate within
 // half a voxel), a tube wall, a pin, an L of two plates (no thin reading at
 // its concave edge), a slot between two plates measured on the gap side, the
-// cap, and cancellation. The level sets come from OpenVDB's own
+// cap (with the ball beside a thick face), and cancellation. The level sets come from OpenVDB's own
 // meshToSignedDistanceField, not from fabvdb's signed distance.
 #include "volume/local_thickness.h"
 
@@ -147,6 +147,24 @@ TEST(LocalThickness, SlotWidthOnTheGapSide) {
     for (size_t i = 0; i < points.size(); ++i) {
         EXPECT_DOUBLE_EQ(solid.thickness[i], 1.6) << i;
         EXPECT_EQ(solid.capped[i], 1) << i;
+    }
+}
+
+TEST(LocalThickness, ThickFacesAreCappedWithTheBallBesideThem) {
+    const double voxel = 0.2, radius = 1.0;
+    const auto grid = level_set(test::make_box({0, 0, 0}, {10, 10, 4}), voxel, radius + 5 * voxel);
+    // Face points away from the edges, each with its inward normal.
+    const std::vector<std::pair<Vec3, Vec3>> faces = {{{5.1, 4.3, 4.0}, {0, 0, -1}}, {{3.7, 6.2, 0.0}, {0, 0, 1}},
+                                                      {{0.0, 5.5, 2.1}, {1, 0, 0}}, {{6.6, 10.0, 1.9}, {0, -1, 0}}};
+    std::vector<Vec3> points;
+    for (const auto& face : faces) points.push_back(face.first);
+    Progress progress;
+    const LocalThickness result = local_thickness(*grid, points, ThicknessSide::solid, radius, progress);
+    for (size_t i = 0; i < points.size(); ++i) {
+        EXPECT_DOUBLE_EQ(result.thickness[i], 2.0 * radius) << i;
+        EXPECT_EQ(result.capped[i], 1) << i;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(result.centre[i][k], faces[i].first[k] + radius * faces[i].second[k], 0.25 * voxel) << i;
     }
 }
 

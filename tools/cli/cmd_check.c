@@ -18,7 +18,7 @@ static const cli_option options[] = {
     {"--build-volume", 0, CLI_STRING, "XxYxZ", NULL, "the printer's build volume, e.g. 250x210x220mm (mm, cm or in)"},
     {"--thickness-map", 0, CLI_STRING, "MAP.ply", NULL,
      "write the surface coloured by wall thickness (PLY, viridis) and MAP.png, its legend"},
-    {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size (default: the minimum wall / 4, at most 400 along the part); not with --resolution"},
+    {"--voxel", 0, CLI_LENGTH, "LEN", NULL, "voxel size (default: 400 along the part, kept between the minimum wall / 4 and / 2); not with --resolution"},
     {"--resolution", 0, CLI_INT, "N", NULL, "voxel = longest bounding-box side / N (N >= 8); not with --voxel"},
     {"--fail-on", 0, CLI_STRING, "warn|fail", "fail", "the verdict that makes the exit code 5"},
     {"--report", 0, CLI_STRING, "FILE.json", NULL, "also write every figure as JSON (keys: docs/check.md)"},
