@@ -464,6 +464,49 @@ FABVDB_API fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* m
                                            const fabvdb_drain_options* options, fabvdb_mesh** out_mesh,
                                            fabvdb_report** out_report);
 
+/* A drain's heat maps as data: the cavity surface, its triangles facing the
+ * powder, and per vertex of it the values and viridis colours the files of
+ * heatmap_path hold (the positions there are floats, here the doubles they
+ * were written from). Made by fabvdb_mesh_drain_heatmap. (since 0.2) */
+typedef struct fabvdb_heatmap fabvdb_heatmap;
+
+/* The values of a heat map. (since 0.2) */
+/* The share of the powder resting at the vertex at the start that drains
+ * under the recommended routine, in [0, 1]; colours over [0, 1]. */
+#define FABVDB_HEATMAP_DRAINED 0
+/* The powder left there at the end, mm^3 per mm^2 of surface, >= 0; colours
+ * over [0, the largest value] (over [0, 1] when nothing is left). */
+#define FABVDB_HEATMAP_LEFT 1
+
+/* As fabvdb_mesh_drain, and also returns the heat maps (the model of the
+ * prediction under the recommended routine) as data, with no file written
+ * unless options->heatmap_path is set (then the files too, as
+ * fabvdb_mesh_drain writes them). out_heatmap: receives the heat maps, owned
+ * by the caller (fabvdb_heatmap_free), or NULL when the part has no cavity.
+ * The report's heatmap entry has drained_share {min, max, mean_by_powder} and
+ * powder_left {min, max, unit}, and with a heat-map path each also path and
+ * legend. Same parameters, statuses, progress and thread safety as
+ * fabvdb_mesh_drain; out_heatmap NULL is FABVDB_ERR_INVALID_ARGUMENT; on
+ * failure no output is made. (since 0.2) */
+FABVDB_API fabvdb_status fabvdb_mesh_drain_heatmap(fabvdb_ctx* ctx, const fabvdb_mesh* mesh,
+                                                   const fabvdb_drain_options* options, fabvdb_mesh** out_mesh,
+                                                   fabvdb_report** out_report, fabvdb_heatmap** out_heatmap);
+
+/* Frees a heat map and what its accessors returned. NULL does nothing.
+ * (since 0.2) */
+FABVDB_API void fabvdb_heatmap_free(fabvdb_heatmap* heatmap);
+
+/* Accessors. What they return is owned by the heat map and valid until it is
+ * freed. A NULL heat map or an unknown kind gives NULL. Thread-safe.
+ * (since 0.2) */
+/* The cavity surface (use it as any mesh, but do not free it). */
+FABVDB_API const fabvdb_mesh* fabvdb_heatmap_surface(const fabvdb_heatmap* heatmap);
+/* One double per surface vertex: the values of `kind` (FABVDB_HEATMAP_*). */
+FABVDB_API const double* fabvdb_heatmap_values(const fabvdb_heatmap* heatmap, int kind);
+/* Three bytes per surface vertex, r g b: the viridis colours of `kind` over
+ * its range (see FABVDB_HEATMAP_*), the colours of its file. */
+FABVDB_API const uint8_t* fabvdb_heatmap_colours(const fabvdb_heatmap* heatmap, int kind);
+
 /* Options of fabvdb_powder_simulate. (since 0.1) */
 typedef struct fabvdb_powder_options {
     size_t struct_size;          /* set by fabvdb_powder_options_init */

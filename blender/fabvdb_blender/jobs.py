@@ -4,7 +4,8 @@
 # main thread (finish). Invoked from the interface the operator is modal: the
 # interface stays live, progress shows in the status bar and the sidebar, Esc
 # cancels (Context.cancel(); nothing is made). Executed (scripts, background
-# mode) the same steps run at once.
+# mode) the same steps run at once; start() and modal() are also what the
+# headless cancel test drives (tests/blender/cancel_test.py).
 # Copyright (C) 2026 the fabvdb developers. GPL-3.0-or-later.
 import threading
 
@@ -50,11 +51,21 @@ class FabvdbJob:
     def invoke(self, context, event):
         if bpy.app.background:
             return self.execute(context)
+        if not self.start(context):
+            return {'CANCELLED'}
+        manager = context.window_manager
+        self._timer = manager.event_timer_add(0.1, window=context.window)
+        manager.modal_handler_add(self)
+        return {'RUNNING_MODAL'}
+
+    def start(self, context):
+        """Reads the inputs and starts the work in a worker thread; False (reported) when the inputs fail.
+        modal() then follows it on each timer event and cancels it on Esc."""
         try:
             self._inputs = self.prepare(context)
         except fabvdb.Error as error:
             self.report({'ERROR'}, f"fabvdb: {error}")
-            return {'CANCELLED'}
+            return False
         self._ctx = self.job_context(self._inputs)
         self._outcome = {}
         STATE.update(running=True, stage="starting", fraction=0.0, label=self.bl_label)
@@ -73,10 +84,7 @@ class FabvdbJob:
 
         self._thread = threading.Thread(target=run, daemon=True)
         self._thread.start()
-        manager = context.window_manager
-        self._timer = manager.event_timer_add(0.1, window=context.window)
-        manager.modal_handler_add(self)
-        return {'RUNNING_MODAL'}
+        return True
 
     def modal(self, context, event):
         if event.type == 'ESC' and event.value == 'PRESS':

@@ -102,8 +102,10 @@ class VolumeResult(NamedTuple):
     report: Optional[dict]
 
 class HeatMap(NamedTuple):
-    """The cavity surface, per vertex the share of the powder that drains (0..1), the powder left
-    (mm^3/mm^2), the viridis colours (n, 3) uint8, and the report's heatmap entry."""
+    """The cavity surface (triangles facing the powder), per vertex the share of the powder resting there
+    that drains (0..1) and the powder left (mm^3/mm^2), the viridis colours of the share (n, 3) uint8, and
+    the report's heatmap entry (ranges, mean; with a .ply path, the files). Taken from the library as
+    arrays (fabvdb_mesh_drain_heatmap): no file is written unless heatmap is a path."""
     surface: Mesh
     drains: npt.NDArray[np.float64]
     left: npt.NDArray[np.float64]
@@ -180,7 +182,8 @@ def drain(mesh: MeshLike, *, wall: Length = "3mm", holes: Union[str, int] = "aut
           output: Optional[Path] = None, report: Optional[Path] = None, progress: Progress = None,
           context: Optional[Context] = None, threads: int = 0, max_memory: Optional[Size] = None) -> DrainResult:
     """Places and drills drain holes so trapped powder escapes (fabvdb drain; docs/drain.md), with the
-    cleaning routine and, with heatmap, the drainability heat map of the cavity."""
+    cleaning routine and, with heatmap (True, or a .ply path that also receives the files), the
+    drainability heat map of the cavity as arrays (None when the part has no cavity)."""
 
 def powder_sim(mesh: MeshLike, *, holes_from: Union[Path, dict, list, DrainResult],
                orientations: Union[str, Path, npt.ArrayLike] = "all", turns: Optional[int] = None,

@@ -16,13 +16,12 @@ works, so calls in several threads run at once.
 import json
 import os
 import re
-import shutil
 import tempfile
 from typing import NamedTuple, Optional
 
 import numpy as np
 
-from . import _fabvdb, _heatmap, _inputs, _units
+from . import _fabvdb, _inputs, _units
 from ._fabvdb import InvalidArgumentError, Mesh, Volume
 
 
@@ -39,13 +38,13 @@ class VolumeResult(NamedTuple):
 
 
 class HeatMap(NamedTuple):
-    """The drainability heat map of the cavity surface (what ``--heatmap`` writes).
+    """The drainability heat map of the cavity surface (what ``--heatmap`` writes), as arrays.
 
     surface: the cavity surface as a Mesh (facing the powder); drains: per
     vertex, the share of the powder resting there at the start that drains
     (0..1); left: per vertex, the powder left at the end (mm^3 per mm^2);
     colours: the viridis colours of ``drains`` as (n, 3) uint8; report: the
-    drain report's ``heatmap`` entry (ranges, means, the files)."""
+    drain report's ``heatmap`` entry (ranges, mean; with a .ply path, the files)."""
     surface: Mesh
     drains: np.ndarray
     left: np.ndarray
@@ -339,7 +338,7 @@ def drain(mesh, *, wall="3mm", holes="auto", hole_diameter="4mm", repose="35deg"
     orientations: "all" (162 directions), a file of "x y z" lines, or a (k, 3) array of gravity directions.
     effort: chance the operator turns the part once more. keep_out: a JSON file of spheres or a closed mesh
     file where no hole may open. heatmap: True, or a .ply path (also written there, with HEAT_left.ply and
-    PNG legends), to get the drainability heat map of the cavity. voxel: level-set voxel (default wall/4).
+    PNG legends), to get the drainability heat map of the cavity as arrays (None when there is no cavity). voxel: level-set voxel (default wall/4).
     patches: cavity patches of the model.
     Returns DrainResult(mesh, report, holes, routine, heatmap): holes [{center, axis, diameter, cavity,
     depth}], routine [{gravity, hole_down, tilt_degrees, tilt_axis, instruction}], and in the report the
@@ -364,28 +363,11 @@ def drain(mesh, *, wall="3mm", holes="auto", hole_diameter="4mm", repose="35deg"
             raise InvalidArgumentError("voxel must be positive (leave it out for wall / 4)")
     if keep_out is not None:
         options["keep_out_path"] = _inputs.path_text(keep_out, "keep_out")
-    temp = None
-    try:
-        if heatmap is True:
-            temp = tempfile.mkdtemp(prefix="fabvdb-heatmap-")
-            heat_path = os.path.join(temp, "heatmap.ply")
-        elif heatmap not in (None, False):
-            heat_path = _inputs.path_text(heatmap, "heatmap")
-        else:
-            heat_path = None
-        if heat_path:
-            options["heatmap_path"] = heat_path
-        drilled, text = _fabvdb._drain(context, mesh, options, progress)
-        result_report = _inputs.report(text)
-        heat = None
-        if heat_path and os.path.exists(heat_path):
-            surface, drains, colours = _heatmap.read(heat_path)
-            stem, _ = os.path.splitext(heat_path)
-            _, left, _ = _heatmap.read(stem + "_left.ply")
-            heat = HeatMap(surface, drains, left, colours, result_report.get("heatmap", {}))
-    finally:
-        if temp:
-            shutil.rmtree(temp, ignore_errors=True)
+    if heatmap not in (None, False, True):
+        options["heatmap_path"] = _inputs.path_text(heatmap, "heatmap")
+    drilled, text, heat_maps = _fabvdb._drain(context, mesh, options, heatmap not in (None, False), progress)
+    result_report = _inputs.report(text)
+    heat = None if heat_maps is None else HeatMap(*heat_maps, result_report.get("heatmap", {}))
     if output is not None:
         _fabvdb._write_mesh(context, drilled, _inputs.path_text(output, "output"))
     _write_report(result_report, report)

@@ -9,10 +9,12 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "fabvdb.h"
 
@@ -73,6 +75,16 @@ struct Volume {
     Volume& operator=(const Volume&) = delete;
     fabvdb_volume* handle;
 };
+
+// A new (count, columns) array (1 column: (count,)) holding a copy of data.
+template <class T>
+py::array_t<T> copy_array(const T* data, size_t count, size_t columns) {
+    std::vector<py::ssize_t> shape{py::ssize_t(count)};
+    if (columns > 1) shape.push_back(py::ssize_t(columns));
+    py::array_t<T> a(shape);
+    if (count) std::copy(data, data + count * columns, a.mutable_data());
+    return a;
+}
 
 // A report's JSON text, then freed (the Python layer parses it into a dict).
 std::string take_report(fabvdb_report* report);

@@ -221,7 +221,10 @@ void bind_commands(py::module_& m) {
               return std::make_tuple(std::make_unique<Volume>(out), take_report(report));
           });
 
-    m.def("_drain", [](Context& context, const Mesh& mesh, const py::dict& options, const py::object& progress) {
+    // With want_heatmap, the heat maps come back as (surface Mesh, drained share, powder left, colours of the
+    // share as (n, 3) uint8), copied out of the library's fabvdb_heatmap; None when there is no cavity.
+    m.def("_drain", [](Context& context, const Mesh& mesh, const py::dict& options, bool want_heatmap,
+                       const py::object& progress) {
         fabvdb_drain_options o;
         fabvdb_drain_options_init(&o);
         Fields f(options, "drain");
@@ -249,8 +252,29 @@ void bind_commands(py::module_& m) {
         o.heatmap_path = heatmap.empty() ? nullptr : heatmap.c_str();
         fabvdb_mesh* out = nullptr;
         fabvdb_report* report = nullptr;
-        run(context, progress, [&](fabvdb_ctx* ctx) { return fabvdb_mesh_drain(ctx, mesh.handle, &o, &out, &report); });
-        return std::make_tuple(std::make_unique<Mesh>(out), take_report(report));
+        fabvdb_heatmap* heat = nullptr;
+        run(context, progress, [&](fabvdb_ctx* ctx) {
+            return want_heatmap ? fabvdb_mesh_drain_heatmap(ctx, mesh.handle, &o, &out, &report, &heat)
+                                : fabvdb_mesh_drain(ctx, mesh.handle, &o, &out, &report);
+        });
+        std::unique_ptr<fabvdb_heatmap, void (*)(fabvdb_heatmap*)> heat_owner(heat, fabvdb_heatmap_free);
+        py::object drilled = py::cast(std::make_unique<Mesh>(out));
+        const std::string text = take_report(report);
+        py::object heat_maps = py::none();
+        if (heat) {
+            const fabvdb_mesh* cavity = fabvdb_heatmap_surface(heat);
+            const size_t n = fabvdb_mesh_vertex_count(cavity);
+            fabvdb_mesh* surface = nullptr;
+            run(context, py::none(), [&](fabvdb_ctx* ctx) {
+                return fabvdb_mesh_new(ctx, fabvdb_mesh_vertices(cavity), n, fabvdb_mesh_triangles(cavity),
+                                       fabvdb_mesh_triangle_count(cavity), &surface);
+            });
+            heat_maps = py::make_tuple(py::cast(std::make_unique<Mesh>(surface)),
+                                       copy_array(fabvdb_heatmap_values(heat, FABVDB_HEATMAP_DRAINED), n, 1),
+                                       copy_array(fabvdb_heatmap_values(heat, FABVDB_HEATMAP_LEFT), n, 1),
+                                       copy_array(fabvdb_heatmap_colours(heat, FABVDB_HEATMAP_DRAINED), n, 3));
+        }
+        return py::make_tuple(drilled, text, heat_maps);
     });
 
     m.def("_powder_simulate", [](Context& context, const Mesh& part, const std::string& holes_json,

@@ -18,15 +18,6 @@ struct Session {
     ~Session() { fabvdb_decomposition_free(handle); }
 };
 
-template <class T>
-py::array_t<T> copy_array(const T* data, size_t count, size_t columns) {
-    std::vector<py::ssize_t> shape{py::ssize_t(count)};
-    if (columns > 1) shape.push_back(py::ssize_t(columns));
-    py::array_t<T> a(shape);
-    if (count) std::copy(data, data + count * columns, a.mutable_data());
-    return a;
-}
-
 std::unique_ptr<Session> session_new(std::shared_ptr<Context> context, const Mesh& mesh, const py::dict& options,
                                      const py::object& progress) {
     const fabvdb_decompose_options o = decompose_options_from(options);

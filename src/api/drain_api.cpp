@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "api/fidelity_report.h"
@@ -155,38 +156,199 @@ nlohmann::json spread_json(const std::vector<double>& residuals, double total) {
             {"max_fraction", *most / total}};
 }
 
-//! The drain's two heat maps and their legends (see fabvdb_drain_options'
-//! heatmap_path), under the cleaning routine: the share that drains at
-//! `path`, the powder left at STEM_left.ply, each with STEM.png. Returns
-//! what the report says of them.
-nlohmann::json write_heat_maps(const fabvdb::powder::DrainPlan& plan, const std::string& path) {
-    const std::string stem =
-        path.size() > 4 && path.compare(path.size() - 4, 4, ".ply") == 0 ? path.substr(0, path.size() - 4) : path;
+//! The drain's two heat maps under the cleaning routine, per vertex of the
+//! cavity surface: the share of the powder resting there at the start that
+//! drains (over [0, 1]) and the powder left at the end, mm³ per mm² (over
+//! [0, left_top]); and the share drained averaged by powder.
+struct HeatMaps {
+    std::vector<double> share, left;
+    double left_top = 1.0;
+    double mean_by_powder = 1.0;
+};
+
+HeatMaps heat_maps(const fabvdb::powder::DrainPlan& plan) {
     const auto& patches = plan.patches;
     const auto& evaluation = plan.routine_evaluation;
     std::vector<double> depth(patches.size(), 0.0);
     for (size_t j = 0; j < patches.size(); ++j)
         depth[j] = patches.area[j] > 0.0 ? evaluation.left_per_patch[j] / patches.area[j] : 0.0;
-    const std::vector<double> share = fabvdb::powder::vertex_values(plan.cavity_surface, patches, evaluation.drained_share);
-    const std::vector<double> left = fabvdb::powder::vertex_values(plan.cavity_surface, patches, depth);
+    HeatMaps maps;
+    maps.share = fabvdb::powder::vertex_values(plan.cavity_surface, patches, evaluation.drained_share);
+    maps.left = fabvdb::powder::vertex_values(plan.cavity_surface, patches, depth);
     double deepest = 0.0;
-    for (double v : left) deepest = std::max(deepest, v);
-    const double top = deepest > 0.0 ? deepest : 1.0;
-    fabvdb::powder::write_heatmap_ply(plan.cavity_surface, share, 0.0, 1.0,
-                                      "share of the powder resting here at the start that drains", path);
-    fabvdb::write_colour_bar_png(stem + ".png", "powder that drains", 0.0, 1.0, "");
-    fabvdb::powder::write_heatmap_ply(plan.cavity_surface, left, 0.0, top,
-                                      "powder left at the end, mm3 per mm2 of surface", stem + "_left.ply");
-    fabvdb::write_colour_bar_png(stem + "_left.png", "powder left", 0.0, top, "mm");
+    for (double v : maps.left) deepest = std::max(deepest, v);
+    maps.left_top = deepest > 0.0 ? deepest : 1.0;
     double weighted = 0.0, initial = 0.0;
     for (size_t j = 0; j < patches.size(); ++j) {
         weighted += evaluation.initial_per_patch[j] * evaluation.drained_share[j];
         initial += evaluation.initial_per_patch[j];
     }
-    return {{"drained_share", {{"path", path}, {"legend", stem + ".png"}, {"min", 0.0}, {"max", 1.0},
-                               {"mean_by_powder", initial > 0.0 ? weighted / initial : 1.0}}},
-            {"powder_left", {{"path", stem + "_left.ply"}, {"legend", stem + "_left.png"}, {"min", 0.0},
-                             {"max", top}, {"unit", "mm3/mm2"}}}};
+    maps.mean_by_powder = initial > 0.0 ? weighted / initial : 1.0;
+    return maps;
+}
+
+//! What the report says of the heat maps: their ranges and mean.
+nlohmann::json heat_maps_json(const HeatMaps& maps) {
+    return {{"drained_share", {{"min", 0.0}, {"max", 1.0}, {"mean_by_powder", maps.mean_by_powder}}},
+            {"powder_left", {{"min", 0.0}, {"max", maps.left_top}, {"unit", "mm3/mm2"}}}};
+}
+
+//! Writes the heat maps and their legends (see fabvdb_drain_options'
+//! heatmap_path): the share that drains at `path`, the powder left at
+//! STEM_left.ply, each with STEM.png; adds the files to `entry`.
+void write_heat_maps(const fabvdb::powder::DrainPlan& plan, const HeatMaps& maps, const std::string& path,
+                     nlohmann::json& entry) {
+    const std::string stem =
+        path.size() > 4 && path.compare(path.size() - 4, 4, ".ply") == 0 ? path.substr(0, path.size() - 4) : path;
+    fabvdb::powder::write_heatmap_ply(plan.cavity_surface, maps.share, 0.0, 1.0,
+                                      "share of the powder resting here at the start that drains", path);
+    fabvdb::write_colour_bar_png(stem + ".png", "powder that drains", 0.0, 1.0, "");
+    fabvdb::powder::write_heatmap_ply(plan.cavity_surface, maps.left, 0.0, maps.left_top,
+                                      "powder left at the end, mm3 per mm2 of surface", stem + "_left.ply");
+    fabvdb::write_colour_bar_png(stem + "_left.png", "powder left", 0.0, maps.left_top, "mm");
+    entry["drained_share"]["path"] = path;
+    entry["drained_share"]["legend"] = stem + ".png";
+    entry["powder_left"]["path"] = stem + "_left.ply";
+    entry["powder_left"]["legend"] = stem + "_left.png";
+}
+
+}  // namespace
+
+//! The heat maps as data (see fabvdb.h): the cavity surface turned to face
+//! the powder, as the files have it, and each kind's values and colours.
+struct fabvdb_heatmap {
+    std::unique_ptr<fabvdb_mesh> surface;
+    std::vector<double> values[2];
+    std::vector<uint8_t> colours[2];
+};
+
+namespace {
+
+std::unique_ptr<fabvdb_heatmap> new_heatmap_handle(const fabvdb::powder::DrainPlan& plan, HeatMaps maps) {
+    auto handle = std::make_unique<fabvdb_heatmap>();
+    fabvdb::Mesh surface = plan.cavity_surface;
+    for (fabvdb::Triangle& t : surface.triangles) std::swap(t[1], t[2]);
+    handle->surface.reset(fabvdb::api::new_mesh_handle(std::move(surface)));
+    const double top[2] = {1.0, maps.left_top};
+    handle->values[FABVDB_HEATMAP_DRAINED] = std::move(maps.share);
+    handle->values[FABVDB_HEATMAP_LEFT] = std::move(maps.left);
+    for (int kind : {FABVDB_HEATMAP_DRAINED, FABVDB_HEATMAP_LEFT}) {
+        std::vector<uint8_t>& colours = handle->colours[kind];
+        for (const auto& rgb : fabvdb::powder::heatmap_colours(handle->values[kind], 0.0, top[kind]))
+            colours.insert(colours.end(), rgb.begin(), rgb.end());
+    }
+    return handle;
+}
+
+//! fabvdb_mesh_drain, and with `out_heatmap` (else NULL) fabvdb_mesh_drain_heatmap, inside the guard.
+void drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_drain_options* options, fabvdb_mesh** out_mesh,
+           fabvdb_report** out_report, fabvdb_heatmap** out_heatmap) {
+    fabvdb::api::require(mesh, "mesh");
+    fabvdb::api::require(out_mesh, "out_mesh");
+    const fabvdb_drain_options o =
+        fabvdb::api::options_from(options, fabvdb_drain_options_init, "fabvdb_drain_options");
+    require_range(std::isfinite(o.wall) && o.wall > 0.0, "wall must be > 0 mm");
+    require_range(std::isfinite(o.hole_diameter) && o.hole_diameter > 0.0, "hole_diameter must be > 0 mm");
+    require_range(o.repose_degrees > 0.0 && o.repose_degrees < 90.0, "repose_degrees must be in (0, 90)");
+    require_range(o.effort >= 0.0 && o.effort < 1.0, "effort must be in [0, 1)");
+    require_range(o.hole_count >= 0, "hole_count must be >= 0 (0: automatic)");
+    require_range(o.patch_count >= 10, "patch_count must be >= 10");
+    require_range(o.target_residual >= 0.0 && o.target_residual < 1.0, "target_residual must be in [0, 1)");
+    require_range(std::isfinite(o.voxel_size) && o.voxel_size >= 0.0, "voxel_size must be >= 0 mm (0: wall / 4)");
+    fabvdb::Progress progress = ctx->make_progress();
+    fabvdb::powder::DrainPartOptions part_options;
+    part_options.wall = o.wall;
+    part_options.input_name = mesh->name;
+    part_options.voxel_size = o.voxel_size;
+    part_options.memory_budget_bytes = ctx->budget_bytes();
+    part_options.plan.hole_diameter = o.hole_diameter;
+    part_options.plan.repose_radians = o.repose_degrees * kDegree;
+    part_options.plan.effort = o.effort;
+    part_options.plan.orientations = orientation_list(o.orientations, o.orientation_count);
+    part_options.plan.first_gravity = orientation_list(o.first_gravity, 1).front();
+    part_options.plan.patch_count = size_t(o.patch_count);
+    part_options.plan.search.hole_count = o.hole_count;
+    part_options.plan.search.target_residual_fraction = o.target_residual;
+    if (o.keep_out_path)
+        part_options.plan.keep_out = fabvdb::powder::read_keep_out(
+            o.keep_out_path, o.voxel_size > 0 ? o.voxel_size : o.wall / 4.0, 0.5 * o.hole_diameter, progress);
+    fabvdb::powder::DrainPartResult result = fabvdb::powder::drain_part(mesh->mesh, part_options, progress);
+    const auto timings_with_total = [&result] {
+        nlohmann::json timings = result.timings;
+        double total = 0.0;
+        for (const auto& [name, seconds] : result.timings) total += seconds;
+        timings["total"] = total;
+        return timings;
+    };
+    if (!result.has_cavity) {
+        nlohmann::json report = {{"holes", nlohmann::json::array()},
+                                 {"predicted_residual_fraction", 0.0},
+                                 {"predicted_residual_volume", 0.0},
+                                 {"baseline_holes", nlohmann::json::array()},
+                                 {"baseline_residual_fraction", 0.0},
+                                 {"baseline_residual_volume", 0.0},
+                                 {"cavity_volume", 0.0},
+                                 {"cavities", 0},
+                                 {"cavity_count", 0},
+                                 {"input_was_hollow", result.input_was_hollow},
+                                 {"fidelity", fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits)},
+                                 {"voxel_size", result.voxel_size},
+                                 {"timings", timings_with_total()},
+                                 {"warnings", result.warnings}};
+        std::unique_ptr<fabvdb_report> report_handle(
+            out_report ? fabvdb::api::new_report_handle(std::move(report)) : nullptr);
+        *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
+        if (out_report) *out_report = report_handle.release();
+        if (out_heatmap) *out_heatmap = nullptr;
+        return;
+    }
+    const auto& plan = result.plan;
+    nlohmann::json heatmap;
+    std::unique_ptr<fabvdb_heatmap> heatmap_handle;
+    if (o.heatmap_path || out_heatmap) {
+        fabvdb::StageClock clock(result.timings);
+        HeatMaps maps = heat_maps(plan);
+        heatmap = heat_maps_json(maps);
+        if (o.heatmap_path) write_heat_maps(plan, maps, o.heatmap_path, heatmap);
+        if (out_heatmap) heatmap_handle = new_heatmap_handle(plan, std::move(maps));
+        clock.lap("heat map");
+    }
+    nlohmann::json report;
+    report["holes"] = holes_json(plan.holes);
+    report["predicted_residual_fraction"] = plan.evaluation.residual_fraction();
+    report["predicted_residual_volume"] = plan.evaluation.residual_volume;
+    report["routine"] = routine_json(plan);
+    report["routine_residual_fraction"] = plan.routine_evaluation.residual_fraction();
+    report["routine_residual_volume"] = plan.routine_evaluation.residual_volume;
+    report["random_routines"] = spread_json(plan.random_residuals, plan.evaluation.total_volume);
+    report["baseline_holes"] = holes_json(plan.baseline);
+    report["baseline_routine_residual_fraction"] =
+        plan.evaluation.total_volume > 0 ? plan.baseline_routine_residual / plan.evaluation.total_volume : 0.0;
+    report["baseline_residual_fraction"] = plan.baseline_evaluation.residual_fraction();
+    report["baseline_residual_volume"] = plan.baseline_evaluation.residual_volume;
+    report["cavity_volume"] = plan.evaluation.total_volume;
+    report["cavities"] = plan.patches.cavity_count;
+    report["cavity_count"] = plan.patches.cavity_count;
+    report["warnings"] = result.warnings;
+    report["residual_volume_per_cavity"] = plan.evaluation.residual_per_cavity;
+    report["patches"] = plan.patches.size();
+    report["candidates"] = plan.candidate_count;
+    report["input_was_hollow"] = result.input_was_hollow;
+    report["filled_cavities"] = nlohmann::json::array();
+    for (const auto& [center, radius] : result.filled_cavities)
+        report["filled_cavities"].push_back({{"center", vec_json(center)}, {"radius", radius}});
+    report["fidelity"] = fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits);
+    report["voxel_size"] = result.voxel_size;
+    report["repose_degrees"] = o.repose_degrees;
+    report["effort"] = o.effort;
+    report["orientations"] = o.orientations ? o.orientation_count : size_t(162);
+    if (!heatmap.is_null()) report["heatmap"] = heatmap;
+    report["timings"] = timings_with_total();
+    std::unique_ptr<fabvdb_report> report_handle(out_report ? fabvdb::api::new_report_handle(std::move(report))
+                                                            : nullptr);
+    *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
+    if (out_report) *out_report = report_handle.release();
+    if (out_heatmap) *out_heatmap = heatmap_handle.release();
 }
 
 }  // namespace
@@ -221,105 +383,32 @@ void fabvdb_powder_options_init(fabvdb_powder_options* options) {
 
 fabvdb_status fabvdb_mesh_drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_drain_options* options,
                                 fabvdb_mesh** out_mesh, fabvdb_report** out_report) {
+    return fabvdb::api::guard(ctx, [&] { drain(ctx, mesh, options, out_mesh, out_report, nullptr); });
+}
+
+fabvdb_status fabvdb_mesh_drain_heatmap(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_drain_options* options,
+                                        fabvdb_mesh** out_mesh, fabvdb_report** out_report,
+                                        fabvdb_heatmap** out_heatmap) {
     return fabvdb::api::guard(ctx, [&] {
-        fabvdb::api::require(mesh, "mesh");
-        fabvdb::api::require(out_mesh, "out_mesh");
-        const fabvdb_drain_options o =
-            fabvdb::api::options_from(options, fabvdb_drain_options_init, "fabvdb_drain_options");
-        require_range(std::isfinite(o.wall) && o.wall > 0.0, "wall must be > 0 mm");
-        require_range(std::isfinite(o.hole_diameter) && o.hole_diameter > 0.0, "hole_diameter must be > 0 mm");
-        require_range(o.repose_degrees > 0.0 && o.repose_degrees < 90.0, "repose_degrees must be in (0, 90)");
-        require_range(o.effort >= 0.0 && o.effort < 1.0, "effort must be in [0, 1)");
-        require_range(o.hole_count >= 0, "hole_count must be >= 0 (0: automatic)");
-        require_range(o.patch_count >= 10, "patch_count must be >= 10");
-        require_range(o.target_residual >= 0.0 && o.target_residual < 1.0, "target_residual must be in [0, 1)");
-        require_range(std::isfinite(o.voxel_size) && o.voxel_size >= 0.0, "voxel_size must be >= 0 mm (0: wall / 4)");
-        fabvdb::Progress progress = ctx->make_progress();
-        fabvdb::powder::DrainPartOptions part_options;
-        part_options.wall = o.wall;
-        part_options.input_name = mesh->name;
-        part_options.voxel_size = o.voxel_size;
-        part_options.memory_budget_bytes = ctx->budget_bytes();
-        part_options.plan.hole_diameter = o.hole_diameter;
-        part_options.plan.repose_radians = o.repose_degrees * kDegree;
-        part_options.plan.effort = o.effort;
-        part_options.plan.orientations = orientation_list(o.orientations, o.orientation_count);
-        part_options.plan.first_gravity = orientation_list(o.first_gravity, 1).front();
-        part_options.plan.patch_count = size_t(o.patch_count);
-        part_options.plan.search.hole_count = o.hole_count;
-        part_options.plan.search.target_residual_fraction = o.target_residual;
-        if (o.keep_out_path)
-            part_options.plan.keep_out = fabvdb::powder::read_keep_out(
-                o.keep_out_path, o.voxel_size > 0 ? o.voxel_size : o.wall / 4.0, 0.5 * o.hole_diameter, progress);
-        fabvdb::powder::DrainPartResult result = fabvdb::powder::drain_part(mesh->mesh, part_options, progress);
-        const auto timings_with_total = [&result] {
-            nlohmann::json timings = result.timings;
-            double total = 0.0;
-            for (const auto& [name, seconds] : result.timings) total += seconds;
-            timings["total"] = total;
-            return timings;
-        };
-        if (!result.has_cavity) {
-            nlohmann::json report = {{"holes", nlohmann::json::array()},
-                                     {"predicted_residual_fraction", 0.0},
-                                     {"predicted_residual_volume", 0.0},
-                                     {"baseline_holes", nlohmann::json::array()},
-                                     {"baseline_residual_fraction", 0.0},
-                                     {"baseline_residual_volume", 0.0},
-                                     {"cavity_volume", 0.0},
-                                     {"cavities", 0},
-                                     {"cavity_count", 0},
-                                     {"input_was_hollow", result.input_was_hollow},
-                                     {"fidelity", fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits)},
-                                     {"voxel_size", result.voxel_size},
-                                     {"timings", timings_with_total()},
-                                     {"warnings", result.warnings}};
-            if (out_report) *out_report = fabvdb::api::new_report_handle(std::move(report));
-            *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
-            return;
-        }
-        const auto& plan = result.plan;
-        nlohmann::json heatmap;
-        if (o.heatmap_path) {
-            fabvdb::StageClock clock(result.timings);
-            heatmap = write_heat_maps(plan, o.heatmap_path);
-            clock.lap("heat map");
-        }
-        nlohmann::json report;
-        report["holes"] = holes_json(plan.holes);
-        report["predicted_residual_fraction"] = plan.evaluation.residual_fraction();
-        report["predicted_residual_volume"] = plan.evaluation.residual_volume;
-        report["routine"] = routine_json(plan);
-        report["routine_residual_fraction"] = plan.routine_evaluation.residual_fraction();
-        report["routine_residual_volume"] = plan.routine_evaluation.residual_volume;
-        report["random_routines"] = spread_json(plan.random_residuals, plan.evaluation.total_volume);
-        report["baseline_holes"] = holes_json(plan.baseline);
-        report["baseline_routine_residual_fraction"] =
-            plan.evaluation.total_volume > 0 ? plan.baseline_routine_residual / plan.evaluation.total_volume : 0.0;
-        report["baseline_residual_fraction"] = plan.baseline_evaluation.residual_fraction();
-        report["baseline_residual_volume"] = plan.baseline_evaluation.residual_volume;
-        report["cavity_volume"] = plan.evaluation.total_volume;
-        report["cavities"] = plan.patches.cavity_count;
-        report["cavity_count"] = plan.patches.cavity_count;
-        report["warnings"] = result.warnings;
-        report["residual_volume_per_cavity"] = plan.evaluation.residual_per_cavity;
-        report["patches"] = plan.patches.size();
-        report["candidates"] = plan.candidate_count;
-        report["input_was_hollow"] = result.input_was_hollow;
-        report["filled_cavities"] = nlohmann::json::array();
-        for (const auto& [center, radius] : result.filled_cavities)
-            report["filled_cavities"].push_back({{"center", vec_json(center)}, {"radius", radius}});
-        report["fidelity"] = fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits);
-        report["voxel_size"] = result.voxel_size;
-        report["repose_degrees"] = o.repose_degrees;
-        report["effort"] = o.effort;
-        report["orientations"] = o.orientations ? o.orientation_count : size_t(162);
-        if (o.heatmap_path) report["heatmap"] = heatmap;
-        report["timings"] = timings_with_total();
-        fabvdb_report* report_handle = out_report ? fabvdb::api::new_report_handle(std::move(report)) : nullptr;
-        *out_mesh = fabvdb::api::new_mesh_handle(std::move(result.drilled), true);
-        if (out_report) *out_report = report_handle;
+        fabvdb::api::require(out_heatmap, "out_heatmap");
+        drain(ctx, mesh, options, out_mesh, out_report, out_heatmap);
     });
+}
+
+void fabvdb_heatmap_free(fabvdb_heatmap* heatmap) { delete heatmap; }
+
+const fabvdb_mesh* fabvdb_heatmap_surface(const fabvdb_heatmap* heatmap) {
+    return heatmap ? heatmap->surface.get() : nullptr;
+}
+
+const double* fabvdb_heatmap_values(const fabvdb_heatmap* heatmap, int kind) {
+    if (!heatmap || (kind != FABVDB_HEATMAP_DRAINED && kind != FABVDB_HEATMAP_LEFT)) return nullptr;
+    return heatmap->values[kind].data();
+}
+
+const uint8_t* fabvdb_heatmap_colours(const fabvdb_heatmap* heatmap, int kind) {
+    if (!heatmap || (kind != FABVDB_HEATMAP_DRAINED && kind != FABVDB_HEATMAP_LEFT)) return nullptr;
+    return heatmap->colours[kind].data();
 }
 
 fabvdb_status fabvdb_powder_simulate(fabvdb_ctx* ctx, const fabvdb_mesh* part, const char* holes_json_text,

@@ -41,11 +41,18 @@ std::vector<double> vertex_values(const Mesh& surface, const CavityPatches& patc
     return sum;
 }
 
+std::vector<std::array<uint8_t, 3>> heatmap_colours(const std::vector<double>& vertex_value, double low, double high) {
+    const double span = high > low ? high - low : 1.0;
+    std::vector<std::array<uint8_t, 3>> colours(vertex_value.size());
+    for (size_t i = 0; i < vertex_value.size(); ++i) colours[i] = viridis((vertex_value[i] - low) / span);
+    return colours;
+}
+
 void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_value, double low, double high,
                        const std::string& description, const std::string& path, bool reverse_faces) {
     if (vertex_value.size() != surface.vertices.size())
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the heat map's values do not match its vertices");
-    const double span = high > low ? high - low : 1.0;
+    const std::vector<std::array<uint8_t, 3>> colours = heatmap_colours(vertex_value, low, high);
     std::string out = "ply\nformat binary_little_endian 1.0\ncomment fabvdb heat map: " + description + "\n";
     out += "comment colours: viridis from " + std::to_string(low) + " to " + std::to_string(high) + "\n";
     out += "element vertex " + std::to_string(surface.vertices.size()) + "\n";
@@ -55,7 +62,7 @@ void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_va
     out += "property list uchar int vertex_indices\nend_header\n";
     for (size_t i = 0; i < surface.vertices.size(); ++i) {
         for (int k = 0; k < 3; ++k) put(out, float(surface.vertices[i][k]));
-        for (uint8_t channel : viridis((vertex_value[i] - low) / span)) put(out, channel);
+        for (uint8_t channel : colours[i]) put(out, channel);
         put(out, float(vertex_value[i]));
     }
     for (const Triangle& t : surface.triangles) {

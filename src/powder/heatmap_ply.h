@@ -6,9 +6,12 @@
 //! the powder (the cavity surface turned inside out); without, they keep the
 //! surface's own orientation (an outer surface, as `fabvdb check`'s thickness
 //! map). Written atomically (Error(IO) on failure, no
-//! partial file).
+//! partial file). heatmap_colours gives the same colours as data (the C
+//! API's fabvdb_heatmap).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +23,10 @@ namespace fabvdb::powder {
 //! The per-vertex values of `per_patch` (area-weighted means).
 std::vector<double> vertex_values(const Mesh& surface, const CavityPatches& patches,
                                   const std::vector<double>& per_patch);
+
+//! The viridis colour of each value over [low, high] (clamped; an empty
+//! range spans [low, low + 1]): the colours write_heatmap_ply writes.
+std::vector<std::array<uint8_t, 3>> heatmap_colours(const std::vector<double>& vertex_value, double low, double high);
 
 void write_heatmap_ply(const Mesh& surface, const std::vector<double>& vertex_value, double low, double high,
                        const std::string& description, const std::string& path, bool reverse_faces = true);

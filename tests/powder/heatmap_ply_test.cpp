@@ -2,10 +2,11 @@
 // patches (worked by hand on two triangles of areas 1 and 3; 0 on an unused
 // vertex); the PLY read back byte by byte: header, positions, viridis ends
 // and middle, clamping, values, faces turned over (and by io's PLY reader);
-// low = high; mismatched sizes are INVALID_ARGUMENT; an unwritable path is
-// IO and leaves no file.
+// low = high; the colours as data; mismatched sizes are INVALID_ARGUMENT; an
+// unwritable path is IO and leaves no file.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -159,6 +160,15 @@ TEST(HeatmapPly, AnEmptyRangeStillColours) {
         for (int k = 0; k < 3; ++k) EXPECT_EQ(take<uint8_t>(bytes, at), expected_rgb[v][k]) << "vertex " << v;
         at += 4;
     }
+}
+
+TEST(HeatmapPly, ColoursAsDataAreViridisOverTheRange) {
+    // The same stops as the files: 0 → viridis(0), 2 → viridis(0.5), 4 → viridis(1) over [0, 4], clamped.
+    using Rgb = std::array<uint8_t, 3>;
+    EXPECT_EQ(fabvdb::powder::heatmap_colours({0.0, 2.0, 4.0, -1.0, 7.0}, 0.0, 4.0),
+              (std::vector<Rgb>{{68, 1, 84}, {33, 145, 140}, {253, 231, 37}, {68, 1, 84}, {253, 231, 37}}));
+    EXPECT_EQ(fabvdb::powder::heatmap_colours({3.0, 4.0}, 3.0, 3.0), (std::vector<Rgb>{{68, 1, 84}, {253, 231, 37}}));
+    EXPECT_TRUE(fabvdb::powder::heatmap_colours({}, 0.0, 1.0).empty());
 }
 
 TEST(HeatmapPly, RefusesMismatchedValuesAndUnwritablePaths) {

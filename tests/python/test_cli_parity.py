@@ -60,6 +60,41 @@ def test_drain(tmp_path, sphere_path):
     assert result.report["predicted_residual_fraction"] == expected["predicted_residual_fraction"]
 
 
+def read_heat_ply(path):
+    """(positions, colours, values, faces) of a heat-map PLY as `fabvdb drain --heatmap` writes it."""
+    data = path.read_bytes()
+    body = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:body].decode("ascii").splitlines()
+    count = {line.split()[1]: int(line.split()[2]) for line in header if line.startswith("element")}
+    vertex = np.dtype([("p", "<f4", (3,)), ("rgb", "u1", (3,)), ("q", "<f4")])
+    face = np.dtype([("n", "u1"), ("i", "<i4", (3,))])
+    vertices = np.frombuffer(data, vertex, count["vertex"], body)
+    faces = np.frombuffer(data, face, count["face"], body + vertices.nbytes)
+    assert len(data) == body + vertices.nbytes + faces.nbytes and np.all(faces["n"] == 3)
+    return vertices["p"], vertices["rgb"], vertices["q"], faces["i"]
+
+
+def test_drain_heatmap(tmp_path, sphere_path):
+    cli("drain", sphere_path, "--scale", 20, "-o", tmp_path / "cli.stl", "--holes", 2, "--patches", 300,
+        "--heatmap", tmp_path / "cli.ply")
+    sphere = fabvdb.read(sphere_path, scale=20)
+    heat = fabvdb.drain(sphere, holes=2, patches=300, heatmap=True).heatmap
+    # The arrays hold what the tool's files hold (positions and values there as floats).
+    points, rgb, drains, faces = read_heat_ply(tmp_path / "cli.ply")
+    assert np.array_equal(np.asarray(heat.surface.vertices, dtype=np.float32), points)
+    assert np.array_equal(np.asarray(heat.surface.triangles, dtype=np.int64), faces)
+    assert np.array_equal(heat.colours, rgb)
+    assert np.array_equal(heat.drains.astype(np.float32), drains)
+    left_points, _, left, left_faces = read_heat_ply(tmp_path / "cli_left.ply")
+    assert np.array_equal(left_points, points) and np.array_equal(left_faces, faces)
+    assert np.array_equal(heat.left.astype(np.float32), left)
+    # With a path, the same files as the tool's, byte for byte.
+    fabvdb.drain(sphere, holes=2, patches=300, heatmap=tmp_path / "py.ply")
+    for cli_name, py_name in (("cli.ply", "py.ply"), ("cli_left.ply", "py_left.ply"), ("cli.png", "py.png"),
+                              ("cli_left.png", "py_left.png")):
+        assert same_bytes(tmp_path / cli_name, tmp_path / py_name), py_name
+
+
 def test_powder_sim(tmp_path, sphere_path):
     cli("drain", sphere_path, "--scale", 20, "-o", tmp_path / "drained.stl", "--holes", 2, "--patches", 300,
         "--report", tmp_path / "drain.json")

@@ -158,10 +158,44 @@ def test_drain_heatmap_per_vertex(drained):
     assert heat is not None
     n = heat.surface.vertex_count
     assert heat.drains.shape == (n,) and heat.left.shape == (n,) and heat.colours.shape == (n, 3)
-    assert np.all((heat.drains >= -1e-6) & (heat.drains <= 1 + 1e-6))
-    # The cavity surface lies at the wall's depth.
+    assert heat.colours.dtype == np.uint8
+    assert np.all((heat.drains >= 0) & (heat.drains <= 1)) and np.all(heat.left >= 0)
+    # The cavity surface lies at the wall's depth and faces the powder (inward: a negative volume).
     radius = np.linalg.norm(heat.surface.vertices, axis=1)
     assert np.all(np.abs(radius - 17.0) < 1.0)
+    assert is_closed(heat.surface)
+    assert signed_volume(heat.surface) == pytest.approx(-4.0 / 3.0 * np.pi * 17.0 ** 3, rel=0.05)
+    assert heat.report["drained_share"]["max"] == 1.0 and "path" not in heat.report["drained_share"]
+    assert heat.report["powder_left"]["max"] == pytest.approx(max(heat.left.max(), 0) or 1.0)
+
+
+def box_surface_distance(points, lo, hi):
+    """Distance of each point to the surface of the box [lo, hi]^3."""
+    below, above = lo - points, points - hi
+    outside = np.linalg.norm(np.maximum(np.maximum(below, above), 0.0), axis=1)
+    inside = np.min(np.minimum(-below, -above), axis=1)
+    return np.where(outside > 0, outside, inside)
+
+
+def test_drain_heatmap_on_a_box_cavity(box, tmp_path):
+    # A 40 mm box with a 3 mm wall: the cavity is the box [3, 37]^3, the voxel wall / 4 = 0.75 mm.
+    path = tmp_path / "heat.ply"
+    result = fabvdb.drain(box, wall="3mm", holes=2, patches=300, heatmap=path)
+    heat = result.heatmap
+    assert np.max(box_surface_distance(np.asarray(heat.surface.vertices), 3.0, 37.0)) < 0.75
+    assert signed_volume(heat.surface) == pytest.approx(-34.0 ** 3, rel=0.05)
+    assert np.all((heat.drains >= 0) & (heat.drains <= 1)) and np.all(heat.left >= 0)
+    # A path also writes the files, and the report names them.
+    assert set(os.listdir(tmp_path)) == {"heat.ply", "heat.png", "heat_left.ply", "heat_left.png"}
+    assert heat.report["drained_share"]["path"] == str(path)
+
+
+def test_drain_heatmap_of_no_cavity(tmp_path):
+    # A plate thinner than two walls stays solid: no holes, no heat map, no temporary files.
+    v, t = box_arrays(1.0)
+    plate = fabvdb.Mesh(v * np.array([40.0, 40.0, 4.0]), t)
+    result = fabvdb.drain(plate, wall="3mm", heatmap=True)
+    assert result.heatmap is None and result.holes == []
 
 
 def test_powder_sim_from_a_drain_result(drained):
