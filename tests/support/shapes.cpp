@@ -103,4 +103,14 @@ double mesh_volume(const Mesh& mesh) {
     return six_volume / 6.0;
 }
 
+double box_signed_distance(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+    double outside = 0.0, inside = -1e300;
+    for (int k = 0; k < 3; ++k) {
+        const double d = std::max(lo[k] - p[k], p[k] - hi[k]);
+        outside += std::max(d, 0.0) * std::max(d, 0.0);
+        inside = std::max(inside, d);
+    }
+    return outside > 0.0 ? std::sqrt(outside) : inside;
+}
+
 }  // namespace fabvdb::test

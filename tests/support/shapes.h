@@ -33,5 +33,7 @@ Mesh loose_triangles(const std::vector<std::array<Vec3, 3>>& corners);
 Mesh unwelded(const Mesh& mesh);
 //! Signed volume by the divergence theorem (positive for outward closed meshes).
 double mesh_volume(const Mesh& mesh);
+//! Signed distance from `p` to the box [lo, hi] (negative inside), by its own formula.
+double box_signed_distance(const Vec3& p, const Vec3& lo, const Vec3& hi);
 
 }  // namespace fabvdb::test

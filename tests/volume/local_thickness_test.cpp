@@ -11,28 +11,13 @@
 #include <atomic>
 #include <cmath>
 
-#include <openvdb/tools/MeshToVolume.h>
-
 #include "core/error.h"
+#include "support/plain_level_set.h"
 #include "support/shapes.h"
 #include "support/tube.h"
 
 namespace fabvdb::volume {
 namespace {
-
-// The signed distance of closed meshes with a band of `band` mm on each side.
-openvdb::FloatGrid::Ptr level_set(const Mesh& mesh, double voxel, double band) {
-    openvdb::initialize();
-    const auto transform = openvdb::math::Transform::createLinearTransform(voxel);
-    std::vector<openvdb::Vec3s> points;
-    for (const Vec3& v : mesh.vertices) points.emplace_back(float(v[0]), float(v[1]), float(v[2]));
-    std::vector<openvdb::Vec3I> triangles;
-    for (const Triangle& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-    std::vector<openvdb::Vec4I> quads;
-    const float width = float(band / voxel);
-    return openvdb::tools::meshToSignedDistanceField<openvdb::FloatGrid>(*transform, points, triangles, quads, width,
-                                                                         width);
-}
 
 // An L of two plates of thickness t and length 10 meeting at a right angle
 // in xz, 8 mm deep along y: one closed shell, facing out.
@@ -69,7 +54,7 @@ TEST(LocalThickness, PlateMeasuresItsThicknessEverywhereWithinHalfAVoxel) {
     for (double voxel : {0.1, 0.17, 0.25}) {
         const double t = 1.3;
         const Vec3 lo{0.03, -0.07, 0.011}, hi{12.0, 9.0, 0.011 + t};
-        const auto grid = level_set(test::make_box(lo, hi), voxel, 1.5 + 5 * voxel);
+        const auto grid = test::plain_level_set(test::make_box(lo, hi), voxel, 1.5 + 5 * voxel);
         Progress progress;
         const auto points = box_points(lo, hi);
         const LocalThickness result = local_thickness(*grid, points, ThicknessSide::solid, 1.5, progress);
@@ -85,7 +70,7 @@ TEST(LocalThickness, TubeWallAndPinMeasureTheirThickness) {
     const double voxel = 0.1;
     {
         const Mesh tube = test::make_tube(4.0, 4.9, 6.0, 256);
-        const auto grid = level_set(tube, voxel, 2.0);
+        const auto grid = test::plain_level_set(tube, voxel, 2.0);
         std::vector<Vec3> points;
         for (int i = 0; i < 16; ++i) {
             const double a = 0.37 + 2.0 * M_PI * i / 16;
@@ -100,7 +85,7 @@ TEST(LocalThickness, TubeWallAndPinMeasureTheirThickness) {
     }
     {
         const Mesh pin = test::make_tube(0.0, 0.4, 5.0, 128);
-        const auto grid = level_set(pin, voxel, 1.2);
+        const auto grid = test::plain_level_set(pin, voxel, 1.2);
         std::vector<Vec3> points;
         for (int i = 0; i < 12; ++i) {
             const double a = 2.0 * M_PI * i / 12;
@@ -118,7 +103,7 @@ TEST(LocalThickness, TubeWallAndPinMeasureTheirThickness) {
 
 TEST(LocalThickness, ConcaveEdgeOfAnLDoesNotReadThin) {
     const double voxel = 0.12, t = 1.0;
-    const auto grid = level_set(make_l(t), voxel, 2.5);
+    const auto grid = test::plain_level_set(make_l(t), voxel, 2.5);
     std::vector<Vec3> points;
     for (double y : {1.0, 4.0, 7.0})
         for (double d : {0.0, 0.05, 0.3, 1.0, 3.0}) {
@@ -133,7 +118,7 @@ TEST(LocalThickness, ConcaveEdgeOfAnLDoesNotReadThin) {
 TEST(LocalThickness, SlotWidthOnTheGapSide) {
     const double voxel = 0.1, w = 0.7;
     const Mesh slot = test::merged(test::make_box({0, 0, 0}, {10, 10, 2}), test::make_box({0, 0, 2 + w}, {10, 10, 4 + w}));
-    const auto grid = level_set(slot, voxel, 1.5);
+    const auto grid = test::plain_level_set(slot, voxel, 1.5);
     std::vector<Vec3> points;
     for (double x : {2.0, 5.0, 7.3}) {
         points.push_back({x, 5.0, 2.0});
@@ -152,7 +137,7 @@ TEST(LocalThickness, SlotWidthOnTheGapSide) {
 
 TEST(LocalThickness, ThickFacesAreCappedWithTheBallBesideThem) {
     const double voxel = 0.2, radius = 1.0;
-    const auto grid = level_set(test::make_box({0, 0, 0}, {10, 10, 4}), voxel, radius + 5 * voxel);
+    const auto grid = test::plain_level_set(test::make_box({0, 0, 0}, {10, 10, 4}), voxel, radius + 5 * voxel);
     // Face points away from the edges, each with its inward normal.
     const std::vector<std::pair<Vec3, Vec3>> faces = {{{5.1, 4.3, 4.0}, {0, 0, -1}}, {{3.7, 6.2, 0.0}, {0, 0, 1}},
                                                       {{0.0, 5.5, 2.1}, {1, 0, 0}}, {{6.6, 10.0, 1.9}, {0, -1, 0}}};
@@ -169,7 +154,7 @@ TEST(LocalThickness, ThickFacesAreCappedWithTheBallBesideThem) {
 }
 
 TEST(LocalThickness, NoPointsAndCancellation) {
-    const auto grid = level_set(test::make_box({0, 0, 0}, {2, 2, 2}), 0.2, 1.5);
+    const auto grid = test::plain_level_set(test::make_box({0, 0, 0}, {2, 2, 2}), 0.2, 1.5);
     Progress progress;
     EXPECT_TRUE(local_thickness(*grid, {}, ThicknessSide::solid, 1.0, progress).thickness.empty());
     std::atomic<bool> cancel{true};

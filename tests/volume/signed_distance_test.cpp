@@ -15,6 +15,7 @@ namespace {
 
 using fabvdb::Mesh;
 using fabvdb::Vec3;
+using fabvdb::test::box_signed_distance;
 namespace volume = fabvdb::volume;
 
 openvdb::FloatGrid::Ptr distance(const Mesh& mesh, double voxel, volume::SignedDistanceStats* stats = nullptr,
@@ -60,16 +61,6 @@ double sphere_distance(const Vec3& p, const Vec3& c, double r) {
     return std::sqrt((p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) + (p[2] - c[2]) * (p[2] - c[2])) - r;
 }
 
-double box_distance(const Vec3& p, const Vec3& lo, const Vec3& hi) {
-    double outside = 0.0, inside = -1e300;
-    for (int k = 0; k < 3; ++k) {
-        const double d = std::max(lo[k] - p[k], p[k] - hi[k]);
-        outside += std::max(d, 0.0) * std::max(d, 0.0);
-        inside = std::max(inside, d);
-    }
-    return outside > 0.0 ? std::sqrt(outside) : inside;
-}
-
 TEST(SignedDistance, SphereIsItsDistanceField) {
     const Mesh sphere = fabvdb::test::make_sphere({1, 2, 3}, 10.0, 5);
     volume::SignedDistanceStats stats;
@@ -95,7 +86,8 @@ TEST(SignedDistance, OverlappingShellsUnite) {
     EXPECT_TRUE(stats.rebuilt);
     expect_matches(*grid, {-2, -2, -2}, {17, 17, 17},
                    [](const Vec3& p) {
-                       return std::min(box_distance(p, {0, 0, 0}, {10, 10, 10}), box_distance(p, {5, 5, 5}, {15, 15, 15}));
+                       return std::min(box_signed_distance(p, {0, 0, 0}, {10, 10, 10}),
+                                       box_signed_distance(p, {5, 5, 5}, {15, 15, 15}));
                    },
                    0.3);  // the rebuilt band rounds sharp edges by about a voxel
 }
@@ -112,7 +104,8 @@ TEST(SignedDistance, PlateThinnerThanAVoxelKeepsItsTrueDistance) {
     EXPECT_FALSE(stats.rebuilt);
     expect_matches(*grid, {-2, -2, -2}, {18, 12, 12},
                    [&](const Vec3& p) {
-                       return std::min(box_distance(p, {0, 0, 0}, {10, 10, 10}), box_distance(p, plate_lo, plate_hi));
+                       return std::min(box_signed_distance(p, {0, 0, 0}, {10, 10, 10}),
+                                       box_signed_distance(p, plate_lo, plate_hi));
                    },
                    0.1);
 }
@@ -123,15 +116,15 @@ TEST(SignedDistance, OpenBoxIsClosedAcrossItsHole) {
     auto grid = distance(open, 0.25, &stats);
     EXPECT_TRUE(stats.rebuilt);
     expect_matches(*grid, {-2, -2, -2}, {12, 12, 12},
-                   [](const Vec3& p) { return box_distance(p, {0, 0, 0}, {10, 10, 10}); }, 0.3);
+                   [](const Vec3& p) { return box_signed_distance(p, {0, 0, 0}, {10, 10, 10}); }, 0.3);
 }
 
 // A hollow part as a farm receives it: the outer shell faces out and the
 // cavity shell faces in. The cavity is kept, whether the band is consistent
 // (closed shells) or rebuilt (the outer shell has a hole).
 double hollow_box_distance(const Vec3& p) {
-    return std::max(box_distance(p, {0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}),
-                    -box_distance(p, {3.13, 3.07, 3.11}, {17.13, 17.07, 17.11}));
+    return std::max(box_signed_distance(p, {0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}),
+                    -box_signed_distance(p, {3.13, 3.07, 3.11}, {17.13, 17.07, 17.11}));
 }
 
 Mesh hollow_box() {
@@ -161,7 +154,7 @@ TEST(SignedDistance, NestedOutwardShellsUnite) {
                                              fabvdb::test::make_box({3.13, 3.07, 3.11}, {17.13, 17.07, 17.11}));
     auto grid = distance(nested, 0.25);
     expect_matches(*grid, {-2, -2, -2}, {22, 22, 22},
-                   [](const Vec3& p) { return box_distance(p, {0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}); }, 0.3);
+                   [](const Vec3& p) { return box_signed_distance(p, {0.13, 0.07, 0.11}, {20.13, 20.07, 20.11}); }, 0.3);
 }
 
 TEST(SignedDistance, OpenSheetEnclosesNothingUnlessThickened) {

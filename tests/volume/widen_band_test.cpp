@@ -12,35 +12,12 @@
 #include <atomic>
 #include <cmath>
 
-#include <openvdb/tools/MeshToVolume.h>
-
 #include "core/error.h"
+#include "support/plain_level_set.h"
 #include "support/shapes.h"
 
 namespace fabvdb::volume {
 namespace {
-
-openvdb::FloatGrid::Ptr narrow_band(const Mesh& mesh, double voxel) {
-    openvdb::initialize();
-    const auto transform = openvdb::math::Transform::createLinearTransform(voxel);
-    std::vector<openvdb::Vec3s> points;
-    for (const Vec3& v : mesh.vertices) points.emplace_back(float(v[0]), float(v[1]), float(v[2]));
-    std::vector<openvdb::Vec3I> triangles;
-    for (const Triangle& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-    std::vector<openvdb::Vec4I> quads;
-    return openvdb::tools::meshToSignedDistanceField<openvdb::FloatGrid>(*transform, points, triangles, quads, 3.0f,
-                                                                         3.0f);
-}
-
-double box_distance(const openvdb::Vec3d& p, const Vec3& lo, const Vec3& hi) {
-    double outside = 0.0, inside = -1e300;
-    for (int k = 0; k < 3; ++k) {
-        const double d = std::max(lo[k] - p[k], p[k] - hi[k]);
-        outside += std::max(d, 0.0) * std::max(d, 0.0);
-        inside = std::max(inside, d);
-    }
-    return outside > 0.0 ? std::sqrt(outside) : inside;
-}
 
 // Every voxel of the index box [lo, hi]: within the widths (a voxel short of
 // them) it is active, its distance at most `under` nearer the surface than
@@ -74,7 +51,7 @@ void expect_widened(const openvdb::FloatGrid& grid, const openvdb::Coord& lo, co
 TEST(WidenBand, BoxIsItsDistanceFieldEightVoxelsInFiveOut) {
     const double voxel = 0.25;
     const Vec3 lo{0.03, -0.07, 0.011}, hi{8.0, 7.0, 6.0};
-    const auto narrow = narrow_band(test::make_box(lo, hi), voxel);
+    const auto narrow = test::plain_level_set(test::make_box(lo, hi), voxel);
     Progress progress;
     const auto wide = widen_band(*narrow, 8, 5, progress);
     EXPECT_EQ(wide->getGridClass(), openvdb::GRID_LEVEL_SET);
@@ -98,15 +75,15 @@ TEST(WidenBand, BoxIsItsDistanceFieldEightVoxelsInFiveOut) {
         return out == 1 ? margin > voxel : out == 0 && second - nearest > 2 * voxel;
     };
     expect_widened(*wide, openvdb::Coord(-10, -10, -10), openvdb::Coord(42, 38, 34),
-                   [&](const openvdb::Vec3d& p) { return box_distance(p, lo, hi); }, beside_face, 8 * voxel,
-                   5 * voxel, 0.2 * voxel, 1e-4);
+                   [&](const openvdb::Vec3d& p) { return test::box_signed_distance({p[0], p[1], p[2]}, lo, hi); },
+                   beside_face, 8 * voxel, 5 * voxel, 0.2 * voxel, 1e-4);
     // Deep inside, beyond the band: inside, at the interior width.
     EXPECT_FLOAT_EQ(wide->getConstAccessor().getValue(openvdb::Coord(16, 14, 12)), -float(8 * voxel));
 }
 
 TEST(WidenBand, SphereIsNearItsDistanceField) {
     const double voxel = 0.2, r = 5.0;
-    const auto narrow = narrow_band(test::make_sphere({0, 0, 0}, r, 5), voxel);
+    const auto narrow = test::plain_level_set(test::make_sphere({0, 0, 0}, r, 5), voxel);
     Progress progress;
     const auto wide = widen_band(*narrow, 8, 5, progress);
     expect_widened(*wide, openvdb::Coord(-35, -35, -35), openvdb::Coord(35, 35, 35),
@@ -115,7 +92,7 @@ TEST(WidenBand, SphereIsNearItsDistanceField) {
 }
 
 TEST(WidenBand, Cancelled) {
-    const auto narrow = narrow_band(test::make_box({0, 0, 0}, {3, 3, 3}), 0.2);
+    const auto narrow = test::plain_level_set(test::make_box({0, 0, 0}, {3, 3, 3}), 0.2);
     std::atomic<bool> cancel{true};
     Progress cancelled(nullptr, nullptr, &cancel);
     try {
