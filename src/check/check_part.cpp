@@ -10,6 +10,7 @@
 
 #include "check/build_fit.h"
 #include "check/overhang_triangles.h"
+#include "check/resin_cups.h"
 #include "check/units_guess.h"
 #include "core/colour_bar.h"
 #include "core/error.h"
@@ -40,6 +41,14 @@ constexpr size_t kListedRegions = 20;
 //! quarter; between the two, the longest side / resolution (docs/check.md).
 constexpr double kCoarsestVoxel = 0.5;
 constexpr double kFinestVoxel = 0.25;
+
+//! The cup search's grid holds at most this many cells (a byte each): about
+//! 0.2 s of sampling on two cores, under the wall walk's time on the bench
+//! models (docs/check.md, Speed).
+constexpr uint64_t kMaxCupCells = uint64_t(1) << 23;
+//! Cups under a cubic millimetre are not listed, as overhangs under a square
+//! millimetre: a droplet's pocket, its seal on the film under 1 mm².
+constexpr double kMinCupVolume = 1.0;
 
 std::string mm(double value) {
     char text[32];
@@ -325,6 +334,43 @@ nlohmann::json cavity_check(const Mesh& surface, const std::vector<volume::MeshS
     return check;
 }
 
+nlohmann::json cup_check(const openvdb::FloatGrid& grid, const Mesh& surface, const Vec3& up,
+                         const ProcessProfile& p, Progress& progress) {
+    nlohmann::json check;
+    if (!p.cups) {
+        check = verdict(pass, "the process cures no layer against a vat film");
+        check["cell"] = nullptr;
+        check["cup_volume"] = 0.0;
+        check["cups"] = nlohmann::json::array();
+        return check;
+    }
+    const CupSearch found = find_cups(grid, surface.vertices, up, kMaxCupCells, kMinCupVolume, progress);
+    double total = 0.0;
+    nlohmann::json cups = nlohmann::json::array();
+    for (const Cup& cup : found.cups) {
+        total += cup.volume;
+        if (cups.size() < kListedRegions)
+            cups.push_back({{"volume", cup.volume}, {"center", vec_json(cup.center)}, {"box", box_json(cup.box)},
+                            {"opening_area", cup.opening_area}, {"opening_center", vec_json(cup.opening_center)}});
+    }
+    std::string message = "no pocket sealed against the vat film as layers are added";
+    if (!found.cups.empty()) {
+        char text[320];
+        const Vec3& at = found.cups.front().center;
+        std::snprintf(text, sizeof text,
+                      "%zu cups hold %.4g mm^3 of resin sealed against the vat film (suction at each peel), the largest "
+                      "%.4g mm^3 at (%.1f, %.1f, %.1f): vent each through its floor (toward the plate) or turn the "
+                      "part so it opens toward the plate",
+                      found.cups.size(), total, found.cups.front().volume, at[0], at[1], at[2]);
+        message = text;
+    }
+    check = verdict(found.cups.empty() ? pass : warn, message);
+    check["cell"] = found.cell;
+    check["cup_volume"] = total;
+    check["cups"] = cups;
+    return check;
+}
+
 nlohmann::json overhang_check(const Mesh& surface, const Vec3& up, double voxel, const ProcessProfile& p) {
     const auto regions = surface::triangle_regions(surface, overhang_triangles(surface, up, p.overhang_degrees, voxel));
     double area = 0.0;
@@ -452,6 +498,8 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     if (options.build_volume[0] > 0.0 && options.build_volume[1] > 0.0 && options.build_volume[2] > 0.0)
         checks["build_volume"] = build_check(mesh, options.up, options.build_volume);
     clock.lap("judge");
+    checks["cups"] = cup_check(*grid, surface, options.up, p, progress);
+    clock.lap("cups");
 
     if (!options.thickness_map.empty()) {
         progress.stage("thickness map");

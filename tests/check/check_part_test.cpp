@@ -5,7 +5,8 @@
 // square channel of known width through a block, a sphere with a sealed
 // cavity (its volume against the construction's), the same part in mm and
 // in inches, overhangs of a floating box, the build volume, the heat map
-// files, and the default voxel (a thin fin on a long part still seen).
+// files, the default voxel (a thin fin on a long part still seen), a
+// pocket opening toward the vat (a cup) and toward the plate (none).
 // Expected figures come from the shapes' dimensions.
 #include "check/check_part.h"
 
@@ -172,6 +173,32 @@ TEST(CheckPart, ThicknessMapFiles) {
     EXPECT_NE(ply.find("property float quality"), std::string::npos);
     EXPECT_FALSE(test::read_bytes(dir.file("walls.png")).empty());
     EXPECT_EQ(report["checks"]["wall_thickness"]["map"]["legend"], dir.file("walls.png"));
+}
+
+TEST(CheckPart, CupsFacingTheVat) {
+    // A 10 x 10 x 8 block with a 6 x 6 x 6 pocket open at the top (z = 8).
+    Mesh pocket = test::make_box({0, 0, 0}, {2, 10, 8});
+    pocket = test::merged(pocket, test::make_box({8, 0, 0}, {10, 10, 8}));
+    pocket = test::merged(pocket, test::make_box({2, 0, 0}, {8, 2, 8}));
+    pocket = test::merged(pocket, test::make_box({2, 8, 0}, {8, 10, 8}));
+    const Mesh through = pocket;
+    pocket = test::merged(pocket, test::make_box({2, 2, 0}, {8, 8, 2}));
+    const double voxel = 0.25;
+    const nlohmann::json vat = run(pocket, "sla", voxel, {0, 0, 1});
+    const nlohmann::json& cups = vat["checks"]["cups"];
+    EXPECT_EQ(status(vat, "cups"), "warn") << cups.dump();
+    ASSERT_EQ(cups["cups"].size(), 1u);
+    EXPECT_NEAR(cups["cups"][0]["volume"].get<double>(), 216.0, 36.0 * voxel);  // a layer of cells at most
+    EXPECT_NEAR(cups["cup_volume"].get<double>(), cups["cups"][0]["volume"].get<double>(), 1e-9);
+    EXPECT_NEAR(cups["cups"][0]["opening_center"][2].get<double>(), 8.0, voxel);
+    EXPECT_DOUBLE_EQ(cups["cell"].get<double>(), voxel);
+    EXPECT_EQ(vat["verdict"], "warn");
+    EXPECT_EQ(status(run(pocket, "sla", voxel, {0, 0, -1}), "cups"), "pass");  // opens toward the plate
+    EXPECT_EQ(status(run(through, "sla", voxel, {0, 0, 1}), "cups"), "pass");
+    const nlohmann::json fdm = run(pocket, "fdm", voxel, {0, 0, 1});
+    EXPECT_EQ(status(fdm, "cups"), "pass");
+    EXPECT_TRUE(fdm["checks"]["cups"]["cell"].is_null());
+    EXPECT_TRUE(fdm["checks"]["cups"]["cups"].empty());
 }
 
 }  // namespace
