@@ -1,4 +1,5 @@
-//! find_cups: the solid sampled on a grid aligned with the build direction,
+//! find_cups: the solid sampled on a grid aligned with the build direction
+//! (one voxel read, a trilinear sample only near the surface),
 //! then one sweep from the plate up: each layer's empty cells are split into
 //! regions (face-connected within the layer), each region a node of a
 //! union-find joined to the regions under it; a node whose set does not
@@ -77,6 +78,12 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
         return Eigen::Vector3d(lo[0] + (i - 0.5) * cell, lo[1] + (j - 0.5) * cell, lo[2] + (k - 0.5) * cell);
     };
 
+    // The trilinear sample's sign; where the nearest voxel lies farther than
+    // a cell diagonal from the surface (most cells: the value is a distance,
+    // and beyond the band ± the background), all eight corners share its
+    // sign, so that one read decides.
+    const double h = grid.voxelSize()[0];
+    const float certain = float(std::sqrt(3.0) * h);
     std::vector<uint8_t> solid(layer_size * size_t(n[2]), 0);
     tbb::parallel_for(tbb::blocked_range<int>(1, n[2] - 1), [&](const tbb::blocked_range<int>& range) {
         if (progress.cancelled()) return;
@@ -87,8 +94,10 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
             for (int j = 1; j < n[1] - 1; ++j)
                 for (int i = 1; i < n[0] - 1; ++i) {
                     const Eigen::Vector3d p = turn.transpose() * centre(i, j, k);
-                    if (sampler.wsSample(openvdb::Vec3d(p[0], p[1], p[2])) < 0.0f)
-                        solid[size_t(k) * layer_size + size_t(j) * n[0] + i] = 1;
+                    const openvdb::Vec3d world(p[0], p[1], p[2]);
+                    float value = accessor.getValue(grid.transform().worldToIndexNodeCentered(world));
+                    if (std::abs(value) <= certain) value = sampler.wsSample(world);
+                    if (value < 0.0f) solid[size_t(k) * layer_size + size_t(j) * n[0] + i] = 1;
                 }
     });
     progress.check();
@@ -114,24 +123,16 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
             outside.push_back(0);
             is_cup.push_back(0);
             regions.emplace_back();
-            Region& r = regions.back();
-            r.lo[0] = r.lo[1] = r.lo[2] = std::numeric_limits<int>::max();
-            r.hi[0] = r.hi[1] = r.hi[2] = std::numeric_limits<int>::min();
             here[start] = id;
             stack.assign(1, start);
             while (!stack.empty()) {
                 const size_t c = stack.back();
                 stack.pop_back();
                 const int i = int(c % n[0]), j = int(c / n[0]);
-                const int index[3] = {i, j, k};
-                ++r.cells;
-                for (int a = 0; a < 3; ++a) {
-                    r.sum[a] += index[a];
-                    r.lo[a] = std::min(r.lo[a], index[a]);
-                    r.hi[a] = std::max(r.hi[a], index[a]);
-                }
                 if (k == 0 || i == 0 || j == 0 || i == n[0] - 1 || j == n[1] - 1) outside[id] = 1;
-                if (k > 0 && below[c] >= 0) joins.emplace_back(id, below[c]);
+                // Neighbouring cells mostly sit over the same region: keep one pair.
+                if (k > 0 && below[c] >= 0 && (joins.empty() || joins.back() != std::make_pair(id, below[c])))
+                    joins.emplace_back(id, below[c]);
                 const size_t next[4] = {c - 1, c + 1, c - n[0], c + n[0]};
                 const bool inside[4] = {i > 0, i < n[0] - 1, j > 0, j < n[1] - 1};
                 for (int a = 0; a < 4; ++a)
@@ -148,18 +149,33 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
             const uint8_t reach = outside[ra] | outside[rb];
             outside[sets.join(ra, rb)] = reach;
         }
-        for (int32_t id = first; id < int32_t(regions.size()); ++id) is_cup[id] = !outside[sets.find(id)];
+        bool any_cup = false;
+        for (int32_t id = first; id < int32_t(regions.size()); ++id) {
+            is_cup[id] = !outside[sets.find(id)];
+            any_cup = any_cup || is_cup[id];
+        }
         for (const auto& [a, b] : joins) {
             if (is_cup[a]) cups.join(a, b);  // b is a cup region too: it lies in a's sealed set
         }
-        // Opening cells: cup cells under open space that is no cup.
+        // The cup regions' cells, and the opening cells: cup cells under
+        // open space that is no cup.
         for (size_t c = 0; c < layer_size; ++c) {
-            if (k == 0 || here[c] < 0 || below[c] < 0 || is_cup[here[c]] || !is_cup[below[c]]) continue;
-            Region& r = regions[below[c]];
-            ++r.opening_cells;
-            r.opening_sum[0] += double(c % n[0]);
-            r.opening_sum[1] += double(c / n[0]);
-            r.opening_sum[2] += k - 1;
+            if (here[c] < 0) continue;
+            const int index[3] = {int(c % n[0]), int(c / n[0]), k};
+            if (any_cup && is_cup[here[c]]) {
+                Region& r = regions[here[c]];
+                if (r.cells++ == 0)
+                    for (int a = 0; a < 3; ++a) r.lo[a] = r.hi[a] = index[a];
+                for (int a = 0; a < 3; ++a) {
+                    r.sum[a] += index[a];
+                    r.lo[a] = std::min(r.lo[a], index[a]);
+                    r.hi[a] = std::max(r.hi[a], index[a]);
+                }
+            } else if (k > 0 && below[c] >= 0 && is_cup[below[c]]) {
+                Region& r = regions[below[c]];
+                ++r.opening_cells;
+                for (int a = 0; a < 3; ++a) r.opening_sum[a] += index[a] - (a == 2 ? 1 : 0);
+            }
         }
         std::swap(below, here);
     }

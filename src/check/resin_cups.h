@@ -18,9 +18,10 @@
 //! voxel, coarsened so the box holds at most `max_cells` cells. A wall at
 //! least a cell thick always separates (its cells block every face path);
 //! a vent narrower than two cells may read closed.
-//! Costs one trilinear sample per cell (parallel) and one sweep of the
-//! layers labelling each layer's empty regions (union-find over regions,
-//! not cells), memory one byte per cell; cancellable.
+//! Costs one voxel read per cell, a trilinear sample only within a cell
+//! diagonal of the surface (parallel), and one sweep of the layers
+//! labelling each layer's empty regions (union-find over regions, not
+//! cells), memory one byte per cell; cancellable.
 #pragma once
 
 #include <cstdint>
