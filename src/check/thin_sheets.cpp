@@ -76,14 +76,27 @@ std::vector<SheetReading> thin_sheets(const Mesh& surface, const std::vector<sur
                 if (found != owner.end() && found->second != int(r)) sheets.join(found->second, int(r));
             }
     std::vector<int> held(regions.size(), 0);
+    std::vector<double> area(regions.size(), 0.0);
+    std::vector<Vec3> facing(regions.size(), Vec3{0, 0, 0});  // the area-weighted normals' sum
     std::vector<SheetReading> readings(regions.size());
     for (size_t r = 0; r < regions.size(); ++r) {
-        readings[r].sheet = sheets.find(int(r));
-        held[readings[r].sheet] += border_loops(surface, regions[r], min_loop);
+        const int sheet = readings[r].sheet = sheets.find(int(r));
+        held[sheet] += border_loops(surface, regions[r], min_loop);
+        for (uint32_t t : regions[r].triangles) {
+            const Vec3& a = surface.vertices[surface.triangles[t][0]];
+            const Vec3& b = surface.vertices[surface.triangles[t][1]];
+            const Vec3& c = surface.vertices[surface.triangles[t][2]];
+            const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+            const Vec3 twice{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+            for (int k = 0; k < 3; ++k) facing[sheet][k] += 0.5 * twice[k];
+            area[sheet] += 0.5 * std::sqrt(twice[0] * twice[0] + twice[1] * twice[1] + twice[2] * twice[2]);
+        }
     }
     for (SheetReading& reading : readings) {
         reading.held_edges = held[reading.sheet];
-        reading.fin = reading.held_edges == 1;
+        const Vec3& f = facing[reading.sheet];
+        reading.two_sided = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) < 0.5 * area[reading.sheet];
+        reading.fin = reading.held_edges == 1 && reading.two_sided;
     }
     return readings;
 }

@@ -11,9 +11,11 @@
 //! medial points (the ball centres the thickness walk reached) lie within a
 //! cell of each other — and a sheet is a fin when its regions' borders make
 //! exactly one loop of at least `min_loop` mm (shorter loops are the
-//! threshold's ragged islands, not where a wall is held). A rounded convex
-//! edge reads the thickness of the wall behind it (local_thickness.h), so it
-//! forms no thin region at all. Pure; linear in the regions' size (a hash of
+//! threshold's ragged islands, not where a wall is held) and it wraps
+//! around its rim: its faces look both ways, the sum of its area-weighted
+//! normals under half its area (a patch read thin on one face only is no
+//! free-standing wall). A rounded convex edge reads the thickness of the
+//! wall behind it (local_thickness.h), so it forms no thin region at all. Pure; linear in the regions' size (a hash of
 //! their medial points, 27 look-ups per vertex).
 #pragma once
 
@@ -28,7 +30,8 @@ namespace fabvdb::check {
 struct SheetReading {
     int sheet = 0;       //!< the index of the sheet the region belongs to (its faces gathered)
     int held_edges = 0;  //!< the border loops of that sheet: where it is held
-    bool fin = false;    //!< held along one edge only
+    bool two_sided = false;  //!< its faces look both ways (it wraps around a rim or a shell)
+    bool fin = false;    //!< held along one edge only, and two-sided
 };
 
 //! One reading per region; `centre`: per surface vertex, its medial point.

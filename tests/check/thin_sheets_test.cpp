@@ -4,7 +4,9 @@
 // in a frame is two regions of one sheet held all round (two loops); the
 // walls of a tray on a thick floor are held at their outer and inner foot
 // (two loops); a closed thin-walled box is thin all over (no loop); a
-// region's border loops shorter than the minimum are not counted.
+// region's border loops shorter than the minimum are not counted; on
+// surfaces given outright, a strip wrapped round its rim with one loop is a
+// fin and a patch of one face with one loop is not (it faces one way).
 #include "check/thin_sheets.h"
 
 #include <gtest/gtest.h>
@@ -113,6 +115,29 @@ TEST(ThinSheets, ShortLoopsDoNotCount) {
     EXPECT_FALSE(r.sheets[regions[0]].fin);
     EXPECT_EQ(r.sheets[regions[0]].held_edges, 0);
     EXPECT_TRUE(thin_sheets(Mesh{}, {}, {}, kVoxel, 1.0).empty());
+}
+
+TEST(ThinSheets, OneFacedPatchIsNoFin) {
+    // A 0.3 x 4 x 3 mm box open at its top: both faces, the ends and the
+    // rim, bordered by one loop 8.6 mm long; its normals nearly cancel.
+    const Mesh wrapped = test::make_open_box({0, 0, 0}, {0.3, 4, 3});
+    const std::vector<Vec3> centres(wrapped.vertices.size(), Vec3{0.15, 2, 1.5});
+    const auto one = surface::triangle_regions(wrapped, std::vector<uint8_t>(wrapped.triangles.size(), 1));
+    ASSERT_EQ(one.size(), 1u);
+    const SheetReading fin = thin_sheets(wrapped, one, centres, kVoxel, 1.0)[0];
+    EXPECT_EQ(fin.held_edges, 1);
+    EXPECT_TRUE(fin.two_sided);
+    EXPECT_TRUE(fin.fin);
+
+    // Its -x face alone: one loop 14 mm long too, but it faces one way.
+    Mesh face;
+    face.vertices = {{0, 0, 0}, {0, 4, 0}, {0, 4, 3}, {0, 0, 3}};
+    face.triangles = {{0, 2, 1}, {0, 3, 2}};
+    const auto patch = surface::triangle_regions(face, {1, 1});
+    const SheetReading one_faced = thin_sheets(face, patch, std::vector<Vec3>(4, Vec3{0.15, 2, 1.5}), kVoxel, 1.0)[0];
+    EXPECT_EQ(one_faced.held_edges, 1);
+    EXPECT_FALSE(one_faced.two_sided);
+    EXPECT_FALSE(one_faced.fin);
 }
 
 }  // namespace
