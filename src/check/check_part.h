@@ -10,8 +10,9 @@
 //!    (local_thickness.h), regions under the minimum wall with their area and
 //!    thinnest point; optionally a heat map (PLY, viridis, and a PNG legend);
 //!  - small_features: thin regions whose medial points lie along a line
-//!    (pins, posts) under the minimum pin diameter, and solid pieces shorter
-//!    than the minimum feature;
+//!    (pins, posts) under the minimum pin diameter, fins (thin walls held
+//!    along one edge only, thin_sheets.h), and solid pieces shorter than the
+//!    minimum feature;
 //!  - holes: regions where the gap beside the surface (local thickness on the
 //!    empty side) is under the minimum hole: holes, channels, slots that close;
 //!  - trapped_volumes: sealed cavities (the surface's inward shells) with
