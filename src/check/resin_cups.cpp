@@ -129,7 +129,7 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
                 const size_t c = stack.back();
                 stack.pop_back();
                 const int i = int(c % n[0]), j = int(c / n[0]);
-                if (k == 0 || i == 0 || j == 0 || i == n[0] - 1 || j == n[1] - 1) outside[id] = 1;
+                if (i == 0 || j == 0 || i == n[0] - 1 || j == n[1] - 1) outside[id] = 1;  // layer 0, empty padding, touches it too
                 // Neighbouring cells mostly sit over the same region: keep one pair.
                 if (k > 0 && below[c] >= 0 && (joins.empty() || joins.back() != std::make_pair(id, below[c])))
                     joins.emplace_back(id, below[c]);
