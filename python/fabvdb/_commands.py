@@ -158,9 +158,9 @@ def check(mesh, *, process="sla", up="+z", build_volume=None, voxel=None, resolu
     "250x210x220mm" (None: not checked). voxel: a length (default: the longest side / resolution, kept
     between the process' minimum wall / 4 and / 2). thickness_map: a .ply path that receives the surface coloured by
     local wall thickness, with its legend beside it. Keys (docs/check.md): verdict ("pass", "warn" or
-    "fail"), process, voxel_size, checks {mesh, units, wall_thickness, small_features, holes,
-    trapped_volumes, overhangs, build_volume}, each with status, message and figures in mm. A part that
-    fails is a finding, never an error. report: also write it to this JSON file."""
+    "fail"), process, voxel_size, checks {mesh, units, wall_thickness, small_features (pins, fins,
+    small pieces), holes, trapped_volumes, cups, overhangs, build_volume}, each with status, message and
+    figures in mm. A part that fails is a finding, never an error. report: also write it to this JSON file."""
     context = _inputs.context_for(context, threads, max_memory)
     handle = _mesh(mesh, context, progress)
     options = {"process": _inputs.path_text(process, "process"),

@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 
 #include "check/build_fit.h"
 #include "check/overhang_triangles.h"
+#include "check/resin_cups.h"
+#include "check/thin_sheets.h"
 #include "check/units_guess.h"
 #include "core/colour_bar.h"
 #include "core/error.h"
@@ -40,6 +43,14 @@ constexpr size_t kListedRegions = 20;
 //! quarter; between the two, the longest side / resolution (docs/check.md).
 constexpr double kCoarsestVoxel = 0.5;
 constexpr double kFinestVoxel = 0.25;
+
+//! The cup search's grid holds at most this many cells (a byte each): about
+//! 0.2 s of sampling on two cores, under the wall walk's time on the bench
+//! models (docs/check.md, Speed).
+constexpr uint64_t kMaxCupCells = uint64_t(1) << 23;
+//! Cups under a cubic millimetre are not listed, as overhangs under a square
+//! millimetre: a droplet's pocket, its seal on the film under 1 mm².
+constexpr double kMinCupVolume = 1.0;
 
 std::string mm(double value) {
     char text[32];
@@ -216,27 +227,51 @@ nlohmann::json wall_check(const Mesh& surface, const volume::LocalThickness& wal
     return check;
 }
 
+//! A thin region's medial points lie along a line (a pin, a post): their
+//! spread across it is a small part of its diameter, along it at least its
+//! diameter. Returns the median thickness as the diameter and the length,
+//! or nothing for a region of a few voxels (the wall check has it) or a sheet.
+std::optional<std::pair<double, double>> pin_reading(const surface::TriangleRegion& region,
+                                                     const volume::LocalThickness& walls) {
+    if (region.vertices.size() < 8) return std::nullopt;
+    std::vector<double> values;
+    for (uint32_t v : region.vertices) values.push_back(walls.thickness[v]);
+    const double diameter = median(values);
+    const auto [along, across] = medial_spread(region, walls.centre);
+    if (!(across < 0.25 * diameter && along * std::sqrt(12.0) >= diameter)) return std::nullopt;
+    return std::make_pair(diameter, along * std::sqrt(12.0));
+}
+
 nlohmann::json feature_check(const Mesh& surface, const volume::LocalThickness& walls,
-                             const std::vector<volume::MeshShell>& shells, const ProcessProfile& p) {
+                             const std::vector<volume::MeshShell>& shells, double voxel, const ProcessProfile& p) {
     const double limit = (1.0 + p.margin_fraction) * p.min_pin;
     Status status = pass;
     nlohmann::json pins = nlohmann::json::array();
     for (const auto& region : surface::triangle_regions(surface, under(surface, walls.thickness, limit))) {
-        if (region.vertices.size() < 8) continue;  // a crumb of a few voxels: the wall check has it
-        std::vector<double> values;
-        for (uint32_t v : region.vertices) values.push_back(walls.thickness[v]);
-        const double diameter = median(values);
-        const auto [along, across] = medial_spread(region, walls.centre);
-        // A pin's medial points lie on its axis: their spread across it is a
-        // small part of its diameter, along it at least its diameter.
-        if (!(across < 0.25 * diameter && along * std::sqrt(12.0) >= diameter)) continue;
-        status = std::max(status, against(diameter, p.min_pin, p.margin_fraction));
+        const auto pin = pin_reading(region, walls);
+        if (!pin) continue;
+        status = std::max(status, against(pin->first, p.min_pin, p.margin_fraction));
         if (pins.size() < kListedRegions) {
-            nlohmann::json pin = region_json(surface, region, walls.thickness, "min_thickness");
-            pin["diameter"] = diameter;
-            pin["length"] = along * std::sqrt(12.0);
-            pins.push_back(pin);
+            nlohmann::json item = region_json(surface, region, walls.thickness, "min_thickness");
+            item["diameter"] = pin->first;
+            item["length"] = pin->second;
+            pins.push_back(item);
         }
+    }
+    // Fins: thin walls (under the wall's warning limit, not pins) held along
+    // one edge only; a loop shorter than the circle of that limit is a ragged
+    // island of the threshold, not where the wall is held (thin_sheets.h).
+    const double wall_limit = (1.0 + p.margin_fraction) * p.min_wall;
+    const auto thin = surface::triangle_regions(surface, under(surface, walls.thickness, wall_limit));
+    const std::vector<SheetReading> sheets = thin_sheets(surface, thin, walls.centre, voxel, M_PI * wall_limit);
+    nlohmann::json fins = nlohmann::json::array();
+    size_t fin_count = 0;
+    for (size_t r = 0; r < thin.size(); ++r) {
+        if (!sheets[r].fin || pin_reading(thin[r], walls)) continue;
+        const double least = walls.thickness[least_vertex(thin[r], walls.thickness)];
+        status = std::max(status, against(least, p.min_wall, p.margin_fraction));
+        ++fin_count;
+        if (fins.size() < kListedRegions) fins.push_back(region_json(surface, thin[r], walls.thickness, "min_thickness"));
     }
     nlohmann::json pieces = nlohmann::json::array();
     for (const auto& shell : shells) {
@@ -253,14 +288,18 @@ nlohmann::json feature_check(const Mesh& surface, const volume::LocalThickness& 
                           {"center", vec_json({0.5 * (box.min[0] + box.max[0]), 0.5 * (box.min[1] + box.max[1]),
                                                0.5 * (box.min[2] + box.max[2])})}});
     }
-    std::string message = "no pin under " + mm(limit) + ", no piece under " + mm(p.min_feature);
+    std::string message = "no pin under " + mm(limit) + ", no fin under " + mm(wall_limit) + ", no piece under " +
+                          mm(p.min_feature);
     if (status != pass)
         message = std::to_string(pins.size()) + " pins under " + mm(limit) + " (minimum " + mm(p.min_pin) + "), " +
-                  std::to_string(pieces.size()) + " pieces under " + mm(p.min_feature);
+                  std::to_string(fin_count) + " fins (thin walls held along one edge) under " + mm(wall_limit) +
+                  " (minimum wall " + mm(p.min_wall) + "), " + std::to_string(pieces.size()) + " pieces under " +
+                  mm(p.min_feature);
     nlohmann::json check = verdict(status, message);
     check["min_pin"] = p.min_pin;
     check["min_feature"] = p.min_feature;
     check["pins"] = pins;
+    check["fins"] = fins;
     check["small_pieces"] = pieces;
     return check;
 }
@@ -322,6 +361,43 @@ nlohmann::json cavity_check(const Mesh& surface, const std::vector<volume::MeshS
     check["escape_hole"] = p.escape_hole;
     check["cavity_volume"] = total;
     check["cavities"] = cavities;
+    return check;
+}
+
+nlohmann::json cup_check(const openvdb::FloatGrid& grid, const Mesh& surface, const Vec3& up,
+                         const ProcessProfile& p, Progress& progress) {
+    nlohmann::json check;
+    if (!p.cups) {
+        check = verdict(pass, "the process cures no layer against a vat film");
+        check["cell"] = nullptr;
+        check["cup_volume"] = 0.0;
+        check["cups"] = nlohmann::json::array();
+        return check;
+    }
+    const CupSearch found = find_cups(grid, surface.vertices, up, kMaxCupCells, kMinCupVolume, progress);
+    double total = 0.0;
+    nlohmann::json cups = nlohmann::json::array();
+    for (const Cup& cup : found.cups) {
+        total += cup.volume;
+        if (cups.size() < kListedRegions)
+            cups.push_back({{"volume", cup.volume}, {"center", vec_json(cup.center)}, {"box", box_json(cup.box)},
+                            {"opening_area", cup.opening_area}, {"opening_center", vec_json(cup.opening_center)}});
+    }
+    std::string message = "no pocket sealed against the vat film as layers are added";
+    if (!found.cups.empty()) {
+        char text[320];
+        const Vec3& at = found.cups.front().center;
+        std::snprintf(text, sizeof text,
+                      "%zu cups hold %.4g mm^3 of resin sealed against the vat film (suction at each peel), the largest "
+                      "%.4g mm^3 at (%.1f, %.1f, %.1f): vent each through its floor (toward the plate) or turn the "
+                      "part so it opens toward the plate",
+                      found.cups.size(), total, found.cups.front().volume, at[0], at[1], at[2]);
+        message = text;
+    }
+    check = verdict(found.cups.empty() ? pass : warn, message);
+    check["cell"] = found.cell;
+    check["cup_volume"] = total;
+    check["cups"] = cups;
     return check;
 }
 
@@ -445,13 +521,15 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     clock.lap("gap width");
 
     checks["wall_thickness"] = wall_check(surface, walls, p);
-    checks["small_features"] = feature_check(surface, walls, shells, p);
+    checks["small_features"] = feature_check(surface, walls, shells, voxel, p);
     checks["holes"] = hole_check(surface, gaps, p);
     checks["trapped_volumes"] = cavity_check(surface, shells, p);
     checks["overhangs"] = overhang_check(surface, options.up, voxel, p);
     if (options.build_volume[0] > 0.0 && options.build_volume[1] > 0.0 && options.build_volume[2] > 0.0)
         checks["build_volume"] = build_check(mesh, options.up, options.build_volume);
     clock.lap("judge");
+    checks["cups"] = cup_check(*grid, surface, options.up, p, progress);
+    clock.lap("cups");
 
     if (!options.thickness_map.empty()) {
         progress.stage("thickness map");

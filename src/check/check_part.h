@@ -10,18 +10,22 @@
 //!    (local_thickness.h), regions under the minimum wall with their area and
 //!    thinnest point; optionally a heat map (PLY, viridis, and a PNG legend);
 //!  - small_features: thin regions whose medial points lie along a line
-//!    (pins, posts) under the minimum pin diameter, and solid pieces shorter
-//!    than the minimum feature;
+//!    (pins, posts) under the minimum pin diameter, fins (thin walls held
+//!    along one edge only, thin_sheets.h), and solid pieces shorter than the
+//!    minimum feature;
 //!  - holes: regions where the gap beside the surface (local thickness on the
 //!    empty side) is under the minimum hole: holes, channels, slots that close;
 //!  - trapped_volumes: sealed cavities (the surface's inward shells) with
 //!    their volume, failing where the process needs escape holes;
 //!  - overhangs: surface needing support with `up` as the build direction;
+//!  - cups (when the profile cures against a vat film): pockets the layers
+//!    seal against the film, built along `up` (resin_cups.h);
 //!  - build_volume: whether the part fits, as placed or turned (build_fit.h).
 //! The verdict is the worst status. Costs the signed distance with a band as
 //! deep on each side as its walk's reach (half its warning limit), the narrow
 //! band widened by closest points (widen_band.h), one extraction and two
-//! walks per surface vertex, most of them a single sample; errors as signed_distance_from_mesh (OUT_OF_BUDGET, BAD_INPUT for a
+//! walks per surface vertex, most of them a single sample, and for cups one
+//! sample per cell of a grid of at most 8M cells; errors as signed_distance_from_mesh (OUT_OF_BUDGET, BAD_INPUT for a
 //! mesh enclosing nothing), Error(IO) when the heat map cannot be written;
 //! reports progress, cancellable.
 #pragma once

@@ -42,6 +42,7 @@ ProcessProfile builtin_profile(const std::string& name) {
         p.min_hole = 0.5;
         p.escape_hole = 3.5;
         p.overhang_degrees = 45.0;
+        p.cups = true;
     } else if (name == "powder") {
         p.description = "powder bed fusion and binder jetting (SLS, MJF, binder jetting)";
         p.min_wall = 0.7;
@@ -99,8 +100,12 @@ ProcessProfile profile_from_json(const std::string& text, const std::string& sou
     read_number(document, "escape_hole", 0.0, 100.0, p.escape_hole, source);
     read_number(document, "overhang_degrees", 0.0, 90.0, p.overhang_degrees, source);
     read_number(document, "margin_fraction", 0.0, 1.0, p.margin_fraction, source);
+    if (document.contains("cups")) {
+        if (!document["cups"].is_boolean()) throw Error(FABVDB_ERR_BAD_INPUT, source + ": \"cups\" must be true or false");
+        p.cups = document["cups"].get<bool>();
+    }
     static const char* known[] = {"base", "name", "description", "min_wall", "min_pin", "min_feature",
-                                  "min_hole", "escape_hole", "overhang_degrees", "margin_fraction"};
+                                  "min_hole", "escape_hole", "overhang_degrees", "margin_fraction", "cups"};
     for (const auto& item : document.items()) {
         bool found = false;
         for (const char* key : known) found = found || item.key() == key;
@@ -123,7 +128,8 @@ nlohmann::json profile_json(const ProcessProfile& p) {
             {"min_hole", p.min_hole},
             {"escape_hole", p.escape_hole},
             {"overhang_degrees", p.overhang_degrees},
-            {"margin_fraction", p.margin_fraction}};
+            {"margin_fraction", p.margin_fraction},
+            {"cups", p.cups}};
 }
 
 }  // namespace fabvdb::check

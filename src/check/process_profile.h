@@ -1,7 +1,8 @@
 //! The thresholds a printing process sets for a part (docs/check.md gives
 //! each value's source): minimum wall, pin diameter, feature size and hole
 //! width, the escape holes a sealed cavity needs, the overhang angle that
-//! prints without support, and the margin above a minimum that only warns.
+//! prints without support, the margin above a minimum that only warns, and
+//! whether cups (pockets sealed against a vat film) matter.
 //! Three built in — "sla" (resin: SLA, DLP, MSLA), "powder" (SLS, MJF,
 //! binder jetting), "fdm" — and a farm's own as a JSON file whose keys are
 //! those of ProcessProfile, starting from a built-in one named by "base"
@@ -26,6 +27,7 @@ struct ProcessProfile {
     double escape_hole = 0.0;      //!< mm, escape-hole diameter a sealed cavity needs; 0: cavities print sealed
     double overhang_degrees = 0.0; //!< the largest tilt from vertical printed without support; 90: never needs any
     double margin_fraction = 0.0;  //!< a figure under (1 + margin_fraction) × its minimum warns
+    bool cups = false;             //!< layers are cured against a vat film: pockets sealed by it are checked
 };
 
 //! The built-in profile called `name` ("sla", "powder", "fdm").

@@ -5,13 +5,18 @@
 // square channel of known width through a block, a sphere with a sealed
 // cavity (its volume against the construction's), the same part in mm and
 // in inches, overhangs of a floating box, the build volume, the heat map
-// files, and the default voxel (a thin fin on a long part still seen).
+// files, the default voxel (a thin fin on a long part still seen), a
+// pocket opening toward the vat (a cup) and toward the plate (none), and
+// fins: a thin wall on a block is one, a thin panel in a frame, a
+// thin-walled closed box and a block with rounded edges have none.
 // Expected figures come from the shapes' dimensions.
 #include "check/check_part.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "support/shapes.h"
 #include "support/tube.h"
@@ -34,6 +39,58 @@ nlohmann::json run(const Mesh& mesh, const std::string& process = "sla", double 
 
 std::string status(const nlohmann::json& report, const char* check) {
     return report["checks"][check]["status"].get<std::string>();
+}
+
+//! A box [lo, hi] rounded by `r` (the points within r of it): each face of
+//! the box grown by r, a grid whose lines are `arc` apart in the rounded
+//! band, projected onto the rounded surface; welded by position.
+Mesh rounded_box(const Vec3& lo, const Vec3& hi, double r, int arc) {
+    std::vector<double> coords[3];
+    for (int k = 0; k < 3; ++k) {
+        for (int s = 0; s < arc; ++s) coords[k].push_back(lo[k] - r + r * s / arc);
+        for (int s = 0; s < 8; ++s) coords[k].push_back(lo[k] + (hi[k] - lo[k]) * s / 8);
+        for (int s = 0; s <= arc; ++s) coords[k].push_back(hi[k] + r * s / arc);
+    }
+    Mesh mesh;
+    std::map<Vec3, uint32_t> index;
+    const auto vertex = [&](const Vec3& v) {
+        Vec3 q, p;
+        double length = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            q[k] = std::clamp(v[k], lo[k], hi[k]);
+            length += (v[k] - q[k]) * (v[k] - q[k]);
+        }
+        for (int k = 0; k < 3; ++k) p[k] = q[k] + r * (v[k] - q[k]) / std::sqrt(length);
+        const auto [at, added] = index.emplace(p, uint32_t(mesh.vertices.size()));
+        if (added) mesh.vertices.push_back(p);
+        return at->second;
+    };
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            const double plane = side ? coords[axis].back() : coords[axis].front();
+            for (size_t i = 0; i + 1 < coords[a].size(); ++i)
+                for (size_t j = 0; j + 1 < coords[b].size(); ++j) {
+                    Vec3 corner[4];
+                    const size_t di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
+                    for (int c = 0; c < 4; ++c) {
+                        corner[c][axis] = plane;
+                        corner[c][a] = coords[a][i + di[c]];
+                        corner[c][b] = coords[b][j + dj[c]];
+                    }
+                    // (a, b, axis) is right-handed: the quad's order faces +axis.
+                    uint32_t v[4];
+                    for (int c = 0; c < 4; ++c) v[c] = vertex(corner[c]);
+                    if (side) {
+                        mesh.triangles.push_back({v[0], v[1], v[2]});
+                        mesh.triangles.push_back({v[0], v[2], v[3]});
+                    } else {
+                        mesh.triangles.push_back({v[0], v[2], v[1]});
+                        mesh.triangles.push_back({v[0], v[3], v[2]});
+                    }
+                }
+        }
+    return mesh;
 }
 
 Mesh scaled(Mesh mesh, double factor) {
@@ -172,6 +229,71 @@ TEST(CheckPart, ThicknessMapFiles) {
     EXPECT_NE(ply.find("property float quality"), std::string::npos);
     EXPECT_FALSE(test::read_bytes(dir.file("walls.png")).empty());
     EXPECT_EQ(report["checks"]["wall_thickness"]["map"]["legend"], dir.file("walls.png"));
+}
+
+TEST(CheckPart, CupsFacingTheVat) {
+    // A 10 x 10 x 8 block with a 6 x 6 x 6 pocket open at the top (z = 8).
+    Mesh pocket = test::make_box({0, 0, 0}, {2, 10, 8});
+    pocket = test::merged(pocket, test::make_box({8, 0, 0}, {10, 10, 8}));
+    pocket = test::merged(pocket, test::make_box({2, 0, 0}, {8, 2, 8}));
+    pocket = test::merged(pocket, test::make_box({2, 8, 0}, {8, 10, 8}));
+    const Mesh through = pocket;
+    pocket = test::merged(pocket, test::make_box({2, 2, 0}, {8, 8, 2}));
+    const double voxel = 0.25;
+    const nlohmann::json vat = run(pocket, "sla", voxel, {0, 0, 1});
+    const nlohmann::json& cups = vat["checks"]["cups"];
+    EXPECT_EQ(status(vat, "cups"), "warn") << cups.dump();
+    ASSERT_EQ(cups["cups"].size(), 1u);
+    EXPECT_NEAR(cups["cups"][0]["volume"].get<double>(), 216.0, 36.0 * voxel);  // a layer of cells at most
+    EXPECT_NEAR(cups["cup_volume"].get<double>(), cups["cups"][0]["volume"].get<double>(), 1e-9);
+    EXPECT_NEAR(cups["cups"][0]["opening_center"][2].get<double>(), 8.0, voxel);
+    EXPECT_DOUBLE_EQ(cups["cell"].get<double>(), voxel);
+    EXPECT_EQ(vat["verdict"], "warn");
+    EXPECT_EQ(status(run(pocket, "sla", voxel, {0, 0, -1}), "cups"), "pass");  // opens toward the plate
+    EXPECT_EQ(status(run(through, "sla", voxel, {0, 0, 1}), "cups"), "pass");
+    const nlohmann::json fdm = run(pocket, "fdm", voxel, {0, 0, 1});
+    EXPECT_EQ(status(fdm, "cups"), "pass");
+    EXPECT_TRUE(fdm["checks"]["cups"]["cell"].is_null());
+    EXPECT_TRUE(fdm["checks"]["cups"]["cups"].empty());
+}
+
+TEST(CheckPart, FinsAndHeldWalls) {
+    const double voxel = 0.06;
+    // A 0.3 mm wall standing 4 mm on a block: held along its foot only.
+    const Mesh fin = test::merged(test::make_box({0, 0, 0}, {10, 6, 2}), test::make_box({4.85, 1, 1.5}, {5.15, 5, 6}));
+    const nlohmann::json on_block = run(fin, "sla", voxel);
+    const nlohmann::json& features = on_block["checks"]["small_features"];
+    EXPECT_EQ(status(on_block, "small_features"), "fail") << features.dump();
+    ASSERT_EQ(features["fins"].size(), 1u) << features.dump();
+    // Its thinnest reading lies where its end meets the block (a concave
+    // corner the walk reads within a voxel), the minimum wall well above.
+    EXPECT_NEAR(features["fins"][0]["min_thickness"].get<double>(), 0.3, voxel);
+    EXPECT_NEAR(features["fins"][0]["center"][0].get<double>(), 5.0, 0.3);
+    EXPECT_GT(features["fins"][0]["box"]["max"][2].get<double>(), 5.5);
+    EXPECT_TRUE(features["pins"].empty());
+
+    // The same 0.3 mm sheet as a panel held all round in a frame.
+    Mesh frame = test::make_box({0, 0, 0}, {3, 10, 4});
+    frame = test::merged(frame, test::make_box({7, 0, 0}, {10, 10, 4}));
+    frame = test::merged(frame, test::make_box({3, 0, 0}, {7, 3, 4}));
+    frame = test::merged(frame, test::make_box({3, 7, 0}, {7, 10, 4}));
+    const nlohmann::json panel = run(test::merged(frame, test::make_box({3, 3, 1.85}, {7, 7, 2.15})), "sla", voxel);
+    EXPECT_EQ(status(panel, "wall_thickness"), "fail");
+    EXPECT_TRUE(panel["checks"]["small_features"]["fins"].empty()) << panel["checks"]["small_features"].dump();
+
+    // A closed box of 0.3 mm walls: thin all over, a wall, no fin.
+    const Mesh shell = test::merged(test::make_box({0, 0, 0}, {6, 5, 4}),
+                                    test::flipped(test::make_box({0.3, 0.3, 0.3}, {5.7, 4.7, 3.7})));
+    const nlohmann::json closed = run(shell, "sla", voxel);
+    EXPECT_EQ(status(closed, "wall_thickness"), "fail");
+    EXPECT_TRUE(closed["checks"]["small_features"]["fins"].empty()) << closed["checks"]["small_features"].dump();
+
+    // A block with edges rounded to 0.2 mm (a fillet's ball is 0.4 mm, under
+    // the 0.5 mm minimum): its edges read the block, no thin wall, no fin.
+    const nlohmann::json rounded = run(rounded_box({0, 0, 0}, {8, 6, 3}, 0.2, 8), "sla", voxel);
+    EXPECT_EQ(status(rounded, "wall_thickness"), "pass") << rounded["checks"]["wall_thickness"].dump();
+    EXPECT_EQ(status(rounded, "small_features"), "pass") << rounded["checks"]["small_features"].dump();
+    EXPECT_EQ(rounded["checks"]["mesh"]["repair_path"], "none");
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 # thin one fails (exit 5, the thin wall's figure in the report near the
 # plate's thickness), one just above the minimum warns (exit 0, exit 5 with
 # --fail-on warn); a cube with a sealed cavity fails for resin, passes for
-# FDM; the same part in inches warns with the 25.4 scale and passes scaled;
+# FDM; a pocket open toward the vat is a resin cup (a warning: exit 5 with
+# --fail-on warn, the summary naming it), none turned toward the plate; the
+# same part in inches warns with the 25.4 scale and passes scaled;
 # the build volume; the heat map and its legend; a farm's JSON profile; the
 # batch recipe, whose summary names the failing order and why; bad inputs
 # and options with the documented exit codes and messages naming the file.
@@ -37,6 +39,44 @@ with open(sys.argv[1], 'w') as f:
         f.write('f %d %d %d\n' % (a + 9, c + 9, b + 9))
 PY
 }
+# cup FILE: a 10 x 10 x 8 mm block with a 6 x 6 x 6 mm pocket open at z = 8,
+# written as the faces between filled and empty 2 mm cells (one clean shell).
+cup() {
+  python3 - "$1" <<'PY'
+import sys
+filled = lambda i, j, k: 0 <= i < 5 and 0 <= j < 5 and 0 <= k < 4 and not (1 <= i <= 3 and 1 <= j <= 3 and k >= 1)
+index, faces = {}, []
+def v(p):
+    return index.setdefault(p, len(index) + 1)
+for i in range(-1, 6):
+    for j in range(-1, 6):
+        for k in range(-1, 5):
+            if not filled(i, j, k):
+                continue
+            for axis in range(3):
+                for side in (0, 1):
+                    n = [i, j, k]
+                    n[axis] += 1 if side else -1
+                    if filled(*n):
+                        continue
+                    a, b = (axis + 1) % 3, (axis + 2) % 3
+                    quad = []
+                    for da, db in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                        p = [i, j, k]
+                        p[axis] += side
+                        p[a] += da
+                        p[b] += db
+                        quad.append(v(tuple(2 * c for c in p)))
+                    if not side:
+                        quad.reverse()
+                    faces += [(quad[0], quad[1], quad[2]), (quad[0], quad[2], quad[3])]
+with open(sys.argv[1], 'w') as f:
+    for p, _ in sorted(index.items(), key=lambda item: item[1]):
+        f.write('v %d %d %d\n' % p)
+    for face in faces:
+        f.write('f %d %d %d\n' % face)
+PY
+}
 # value FILE POINTER: a number or string of a JSON report at a JSON pointer.
 value() {
   python3 - "$1" "$2" <<'PY'
@@ -54,6 +94,7 @@ box "$WORK/thick.obj" 20 15 1.5
 box "$WORK/thin.obj" 20 15 0.3
 box "$WORK/close.obj" 20 15 0.58
 cavity "$WORK/cavity.obj"
+cup "$WORK/cup.obj"
 box "$WORK/part.obj" 50 30 20
 box "$WORK/part_in.obj" 50 30 20 0.03937007874015748
 
@@ -79,6 +120,16 @@ expect_exit 0 near "$(value "$WORK/cavity.json" /checks/trapped_volumes/cavities
 expect_exit 0 near "$(value "$WORK/cavity.json" /checks/trapped_volumes/cavities/0/center/0)" 10 0.3
 expect_exit 0 "$FABVDB" check "$WORK/cavity.obj" --process fdm --report "$WORK/cavity_fdm.json"
 expect_exit 0 test "$(value "$WORK/cavity_fdm.json" /checks/trapped_volumes/status)" = pass
+
+# A cup toward the vat warns (suction, trapped resin); toward the plate it drains.
+expect_exit 0 "$FABVDB" check "$WORK/cup.obj" --process sla --voxel 0.25mm --report "$WORK/cup.json"
+expect_match "$STDOUT" 'cups             warn  1 cups hold'
+expect_exit 0 test "$(value "$WORK/cup.json" /checks/mesh/status)" = pass
+expect_exit 0 near "$(value "$WORK/cup.json" /checks/cups/cups/0/volume)" 216 9
+expect_exit 5 "$FABVDB" check "$WORK/cup.obj" --process sla --voxel 0.25mm --fail-on warn
+expect_match "$STDERR" '^fabvdb check: warn: cups: '
+expect_exit 0 "$FABVDB" check "$WORK/cup.obj" --process sla --voxel 0.25mm --up -z --report "$WORK/cup_down.json"
+expect_exit 0 test "$(value "$WORK/cup_down.json" /checks/cups/status)" = pass
 
 # The same part in mm and in inches.
 expect_exit 0 "$FABVDB" check "$WORK/part.obj" --process fdm --report "$WORK/mm.json"

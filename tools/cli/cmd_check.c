@@ -32,6 +32,7 @@ static const char* const checks[][2] = {
     {"small_features", "small features"},
     {"holes", "holes, channels"},
     {"trapped_volumes", "trapped volumes"},
+    {"cups", "cups"},
     {"overhangs", "overhangs"},
     {"build_volume", "build volume"},
 };
@@ -87,7 +88,7 @@ static void print_check(cli_run* run, const fabvdb_report* report, const char* k
     fabvdb_report_string(run->ctx, report, pointer, &message);
     printf("  %-16s %-4s  %s\n", label, status, message);
     if (strcmp(status, "pass") == 0) return;
-    static const char* const lists[] = {"regions", "pins", "small_pieces", "cavities"};
+    static const char* const lists[] = {"regions", "pins", "fins", "small_pieces", "cavities", "cups"};
     for (size_t i = 0; i < sizeof lists / sizeof lists[0]; ++i) {
         double c[3];
         int found = 1;
@@ -183,9 +184,11 @@ const cli_command cmd_check = {
     "defects and the path `repair` would take; a size that suggests metres, inches or centimetres, with the\n"
     "--scale that fixes it; walls under the minimum, by local thickness from the solid's signed distance\n"
     "(twice the radius of the largest ball inside, reached by climbing to the medial surface: edges do not\n"
-    "read thin); pins under the minimum diameter and pieces under the minimum feature; holes, channels and\n"
-    "gaps under the minimum width; sealed cavities that trap resin or powder; overhang area for the build\n"
-    "direction (--up or --orientation); and, with --build-volume, whether the part fits as placed or turned.\n"
+    "read thin); pins under the minimum diameter, fins (thin walls held along one edge only) and pieces under\n"
+    "the minimum feature; holes, channels and gaps under the minimum width; sealed cavities that trap resin\n"
+    "or powder; for resin cups, pockets the layers seal against the vat film (suction, trapped resin);\n"
+    "overhang area for the build direction (--up or --orientation); and, with --build-volume, whether the\n"
+    "part fits as placed or turned.\n"
     "A dirty mesh is judged as the solid its winding numbers enclose (as `repair` makes it). A figure under\n"
     "its minimum fails, one within the profile's margin above it warns; the verdict is the worst check.\n"
     "Exit 0 when the verdict is under --fail-on, 5 when it reaches it; 1 for a bad option or unknown process,\n"
