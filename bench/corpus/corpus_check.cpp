@@ -64,6 +64,7 @@
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
 
 #include "core/progress.h"
 #include "io/mesh_io.h"
@@ -416,7 +417,7 @@ std::vector<double> shell_volumes(const Mesh& mesh, const std::vector<uint32_t>&
 //! along the normal meets the surface again within `gap` (the wall of a slit
 //! narrower than `gap`, which no fabrication keeps open). Only the points
 //! whose `distance` exceeds `floor` are tested (brute force: their count ×
-//! the triangles); the others stay false.
+//! the triangles, in parallel); the others stay false.
 std::vector<char> enclosed(const Mesh& mesh, const Tree& tree, const std::vector<Vec3>& points,
                            const std::vector<uint32_t>& source, const std::vector<double>& distance, double floor,
                            double step, double gap) {
@@ -424,26 +425,26 @@ std::vector<char> enclosed(const Mesh& mesh, const Tree& tree, const std::vector
     const auto solid = [&](const Vec3& p, const Vec3& n, double along) {
         return std::abs(winding_number(mesh, {p[0] + along * n[0], p[1] + along * n[1], p[2] + along * n[2]})) >= 0.5;
     };
-    for (size_t i = 0; i < points.size(); ++i) {
-        if (!(distance[i] > floor)) continue;
+    tbb::parallel_for(size_t(0), points.size(), [&](size_t i) {
+        if (!(distance[i] > floor)) return;
         const auto& t = mesh.triangles[source[i]];
         Vec3 n = cross(sub(mesh.vertices[t[1]], mesh.vertices[t[0]]), sub(mesh.vertices[t[2]], mesh.vertices[t[0]]));
         const double length = norm(n);
-        if (length == 0) continue;
+        if (length == 0) return;
         for (double& x : n) x /= length;
         // n points away from the solid: an input stored inside out has its
         // solid in front of its triangles.
         if (!solid(points[i], n, -step)) {
-            if (!solid(points[i], n, step)) continue;
+            if (!solid(points[i], n, step)) return;
             for (double& x : n) x = -x;
         }
         if (solid(points[i], n, step)) {
             inside[i] = 1;
-            continue;
+            return;
         }
         const double across = free_distance(tree, points[i], n, 0.5 * step);
         inside[i] = across < gap && solid(points[i], n, across + step);
-    }
+    });
     return inside;
 }
 
