@@ -36,6 +36,8 @@
 //       farther than D.
 //   corpus_check flip IN OUT.obj
 //       writes the input turned inside out (every triangle reversed) as OBJ.
+//   corpus_check obj IN OUT.obj [--fit LEN]
+//       writes the input as read (scaled as --fit does) as OBJ, triangles in order.
 //   corpus_check decomposition D.json
 //       tests/support's decomposition checks (ownership, pieces, energies).
 //
@@ -712,19 +714,33 @@ json check_cover(int argc, char** argv) {
     return out;
 }
 
+//! `mesh` as an OBJ file, every vertex in full precision, every triangle
+//! reversed when `reverse`.
+json write_obj(const Mesh& mesh, const std::string& path, bool reverse) {
+    std::ofstream out(path);
+    if (!out) throw Failure("cannot write " + path);
+    out.precision(17);
+    for (const Vec3& p : mesh.vertices) out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for (const auto& t : mesh.triangles)
+        out << "f " << t[0] + 1 << ' ' << t[reverse ? 2 : 1] + 1 << ' ' << t[reverse ? 1 : 2] + 1 << '\n';
+    out.close();
+    if (!out) throw Failure("cannot write " + path);
+    return {{"file", path}, {"triangles", mesh.triangles.size()}, {"vertices", mesh.vertices.size()}};
+}
+
 //! The input turned inside out, as an OBJ file: every vertex as read (so
 //! `--fit` scales it alike) in full precision, every triangle reversed.
 json flip_input(int argc, char** argv) {
     if (argc < 4) throw Failure("usage: corpus_check flip IN OUT.obj");
-    const Mesh mesh = read_input(argv[2], 0);
-    std::ofstream out(argv[3]);
-    if (!out) throw Failure(std::string("cannot write ") + argv[3]);
-    out.precision(17);
-    for (const Vec3& p : mesh.vertices) out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-    for (const auto& t : mesh.triangles) out << "f " << t[0] + 1 << ' ' << t[2] + 1 << ' ' << t[1] + 1 << '\n';
-    out.close();
-    if (!out) throw Failure(std::string("cannot write ") + argv[3]);
-    return {{"file", argv[3]}, {"triangles", mesh.triangles.size()}, {"vertices", mesh.vertices.size()}};
+    return write_obj(read_input(argv[2], 0), argv[3], true);
+}
+
+//! The input as fabvdb's readers give it, scaled as `--fit LEN` scales it
+//! (none without), as an OBJ file: the same triangles in the same order, for
+//! a program that cannot read every corpus format (Blender, bench/check_vs_blender.sh).
+json copy_input(int argc, char** argv) {
+    if (argc < 4) throw Failure("usage: corpus_check obj IN OUT.obj [--fit LEN]");
+    return write_obj(read_input(argv[2], std::stod(option(argc, argv, "--fit", "0"))), argv[3], false);
 }
 
 json check_decomposition_file(const std::string& path) {
@@ -759,7 +775,7 @@ json check_decomposition_file(const std::string& path) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::cerr << "usage: corpus_check solid|input|cover|flip|decomposition FILE [options] (see the top of "
+        std::cerr << "usage: corpus_check solid|input|cover|flip|obj|decomposition FILE [options] (see the top of "
                      "bench/corpus/corpus_check.cpp)\n";
         return 1;
     }
@@ -770,6 +786,7 @@ int main(int argc, char** argv) {
         else if (mode == "input") out = check_input(argc, argv);
         else if (mode == "cover") out = check_cover(argc, argv);
         else if (mode == "flip") out = flip_input(argc, argv);
+        else if (mode == "obj") out = copy_input(argc, argv);
         else if (mode == "decomposition") {
             int none = 1;
             testing::InitGoogleTest(&none, argv);

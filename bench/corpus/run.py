@@ -25,7 +25,7 @@ import sys
 import time
 
 WALL_MM = 2.0
-COMMANDS = ["info", "repair", "hollow", "drain", "powder-sim", "decompose", "mold"]
+COMMANDS = ["info", "check", "repair", "hollow", "drain", "powder-sim", "decompose", "mold"]
 MOLD_SHARE = {"cad": 12, "sculpture": 10, "scan": 6, "dirty": 7, "large": 3, "degenerate": 2}
 WALL_TOLERANCE = 0.9          # measured wall >= 90% of --wall
 MOLD_MAX_RATIO = 0.01         # input within 1% of the diagonal of the cast parts (max)
@@ -36,6 +36,12 @@ FIDELITY_FAR_VOXELS = 3.0      # (or 3 of the command's voxels, if more) is far;
 FIDELITY_FAR_SHARE = 0.02      # 2% of it may be, and the area-weighted mean at most
 FIDELITY_MEAN_RATIO = 0.001    # 0.1% of the diagonal (or 0.5 voxel, if more: drain's wall / 4
 FIDELITY_MEAN_VOXELS = 0.5     # is 0.5 mm, 0.6% of a 60 mm cube's diagonal)
+CHECK_PROCESS = "sla"
+CHECK_NAMES = ["mesh", "units", "wall_thickness", "small_features", "holes", "trapped_volumes", "overhangs"]
+CHECK_STATUSES = ["pass", "warn", "fail"]
+CHECK_FAIL_EXIT = 5           # `fabvdb check`: the verdict reached --fail-on (fail, by default)
+SIZE_TOLERANCE = 1e-6         # x the fitted size: the report's box against --fit and the checker's diagonal
+VOLUME_TOLERANCE = 1e-5       # x the volume: a clean input's mesh volume (the checker's is after float rounding)
 
 
 def read_manifest(corpus):
@@ -210,6 +216,66 @@ def fidelity(runner, src, diagonal, outputs, voxel, extra=()):
     return cover, None, fig
 
 
+def check_contradictions(rep, code, facts, fit_mm):
+    """What in a `check` report is missing or contradicts what the harness
+    knows apart from fabvdb: the exit code (5 exactly when the verdict is
+    fail), a verdict that is the worst of every check's status, the fitted
+    size (longest side at most --fit, box diagonal = the checker's), and the
+    checker's facts on the input as a binary STL stores it (closed 2-manifold
+    and consistently oriented, shell count, volume of a clean solid)."""
+    problems = []
+    checks = rep.get("checks") if isinstance(rep.get("checks"), dict) else {}
+    missing = [n for n in CHECK_NAMES if not isinstance(checks.get(n), dict)
+               or checks[n].get("status") not in CHECK_STATUSES]
+    if rep.get("verdict") not in CHECK_STATUSES or missing:
+        return ["report without %s" % ", ".join((["a verdict"] if rep.get("verdict") not in CHECK_STATUSES else [])
+                                                + ["check " + n for n in missing])]
+    worst = max((c["status"] for c in checks.values() if c.get("status") in CHECK_STATUSES),
+                key=CHECK_STATUSES.index)
+    if rep["verdict"] != worst:
+        problems.append("verdict %s, worst check %s" % (rep["verdict"], worst))
+    if (code == CHECK_FAIL_EXIT) != (rep["verdict"] == "fail"):
+        problems.append("exit %d with verdict %s" % (code, rep["verdict"]))
+    # --fit scales the box of every vertex the file lists; the units check,
+    # like the checker, boxes the vertices its triangles use, which may lie
+    # inside (vertices no triangle uses).
+    units = checks["units"]
+    size = units.get("size") or [0, 0, 0]
+    longest = max(size)
+    if longest > (1 + SIZE_TOLERANCE) * fit_mm or units["status"] != "pass":
+        problems.append("units: longest side %s mm (%s) after --fit %gmm" % (fmt(longest, 7), units["status"], fit_mm))
+    diagonal = facts.get("diagonal")
+    report_diagonal = sum(x * x for x in size) ** 0.5
+    if diagonal and abs(report_diagonal - diagonal) > SIZE_TOLERANCE * fit_mm:
+        problems.append("units: box diagonal %s mm, the checker's %s mm" % (fmt(report_diagonal, 7), fmt(diagonal, 7)))
+    # The checker rounds to float and welds equal corners, which collapses
+    # triangles whose corners differ only beyond float (cube_gears_prod_req:
+    # 92, as a 3MF's decimal coordinates are read as doubles); its topology
+    # is then another mesh's.
+    mesh = checks["mesh"]
+    if "closed_two_manifold" in facts and facts.get("degenerate_triangles") == 0:
+        said = bool(mesh.get("closed")) and bool(mesh.get("manifold")) and bool(mesh.get("consistently_oriented"))
+        if said != facts["closed_two_manifold"]:
+            problems.append("mesh: closed, manifold and oriented %s, the checker %s" % (
+                "yes" if said else "no", "yes" if facts["closed_two_manifold"] else "no"))
+        elif said and mesh.get("shells") != facts.get("shells"):
+            problems.append("mesh: %s shells, the checker %s" % (mesh.get("shells"), facts.get("shells")))
+    if facts.get("valid"):
+        volume = mesh.get("volume")
+        if not isinstance(volume, (int, float)) or abs(volume - facts["volume"]) > VOLUME_TOLERANCE * facts["volume"]:
+            problems.append("mesh: volume %s mm^3, the checker %s" % (volume, fmt(facts["volume"], 7)))
+    return problems
+
+
+def check_figure(rep):
+    """The verdict, each check's status that is not a pass, and the voxel."""
+    checks = rep.get("checks") if isinstance(rep.get("checks"), dict) else {}
+    flagged = ["%s %s" % (n, checks[n]["status"]) for n in CHECK_NAMES
+               if isinstance(checks.get(n), dict) and checks[n].get("status") in ("warn", "fail")]
+    return "%s%s, voxel %s mm" % (rep.get("verdict"), " (" + ", ".join(flagged) + ")" if flagged else "",
+                                  fmt(rep.get("voxel_size") or 0))
+
+
 def file_digest(path):
     digest = hashlib.sha256()
     with open(path, "rb") as f:
@@ -298,6 +364,30 @@ def process_model(row, args, runner, with_mold):
     else:
         v, why = judge_failure(r, src, None, {}, False)
         cell("info", v, why, r)
+
+    # check: scaled like every other command (its thresholds are millimetres,
+    # and its voxel is kept between a quarter and a half of the minimum wall,
+    # so an unscaled part in metres or at 2 m would be measured at one voxel
+    # or run out of the caps); its report's figures against the checker's.
+    r = runner.run([fabvdb, "check", src] + fit + ["--process", CHECK_PROCESS, "--report", "check.json"], work,
+                   "check") if "check" in wanted else None
+    if r is None:
+        pass
+    elif r["exit"] in (0, CHECK_FAIL_EXIT):
+        try:
+            rep = json.load(open(os.path.join(work, "check.json")))
+        except (OSError, ValueError) as e:
+            rep, problems = None, ["exit %d but no readable report (%s)" % (r["exit"], e)]
+        if rep is not None:
+            problems = check_contradictions(rep, r["exit"], facts, args.fit_mm)
+        fig = check_figure(rep) if rep is not None else ""
+        cell("check", "FAIL" if problems else "ok", "; ".join(problems) + " (" + fig + ")" if problems else fig, r,
+             verdict=rep.get("verdict") if isinstance(rep, dict) else None,
+             statuses={n: rep["checks"][n].get("status") for n in CHECK_NAMES
+                       if isinstance(rep, dict) and n in rep.get("checks", {})})
+    else:
+        v, why = judge_failure(r, src, None, facts, closed_input)
+        cell("check", v, why, r)
 
     # repair
     out = os.path.join(work, "repaired.stl")
@@ -529,6 +619,7 @@ def write_tables(args, rows, selected):
             summary[c][cellv["result"]] += 1
             if cellv["result"] == "FAIL":
                 failures.append((rec["model"], c, cellv))
+    statuses = check_status_counts(records)
     doc = {"generated": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
            "recipe": {"fit_mm": args.fit_mm, "wall_mm": WALL_MM, "holes": "auto", "time_cap_s": args.time_cap,
                       "mem_cap": args.mem_cap, "subset": args.subset, "molds": not args.no_molds,
@@ -536,7 +627,7 @@ def write_tables(args, rows, selected):
                       "fidelity": {"far_ratio": FIDELITY_FAR_RATIO, "mean_ratio": FIDELITY_MEAN_RATIO,
                                    "far_voxels": FIDELITY_FAR_VOXELS, "far_share": FIDELITY_FAR_SHARE,
                                    "mean_voxels": FIDELITY_MEAN_VOXELS}},
-           "summary": summary, "models": records}
+           "summary": summary, "check_statuses": statuses, "models": records}
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump(doc, f, indent=1)
     lines = ["# fabvdb corpus run", "",
@@ -547,6 +638,11 @@ def write_tables(args, rows, selected):
     for c in COMMANDS:
         s = summary[c]
         lines.append("| %s | %d | %d | %d | %d |" % (c, s["ok"], s["refused"], s["FAIL"], s["n/a"]))
+    if any(sum(v.values()) for v in statuses.values()):
+        lines += ["", "`check` (%s) per check: models that pass, warn, fail." % CHECK_PROCESS, "",
+                  "| check | pass | warn | fail |", "|---|---:|---:|---:|"]
+        for n in ["verdict"] + CHECK_NAMES:
+            lines.append("| %s | %d | %d | %d |" % (n, statuses[n]["pass"], statuses[n]["warn"], statuses[n]["fail"]))
     lines += ["", "| model | category | triangles | " + " | ".join(COMMANDS) + " |",
               "|---|---|---:|" + "---|" * len(COMMANDS)]
     for rec in records:
@@ -571,6 +667,19 @@ def write_tables(args, rows, selected):
     return summary, failures
 
 
+def check_status_counts(records):
+    """Per check of `check` (and its verdict), how many models pass, warn, fail."""
+    counts = {n: {v: 0 for v in CHECK_STATUSES} for n in ["verdict"] + CHECK_NAMES}
+    for rec in records:
+        c = rec["runs"].get("check", {})
+        if c.get("verdict") in CHECK_STATUSES:
+            counts["verdict"][c["verdict"]] += 1
+        for n, v in (c.get("statuses") or {}).items():
+            if v in CHECK_STATUSES:
+                counts[n][v] += 1
+    return counts
+
+
 def parse_size(text):
     m = re.fullmatch(r"(\d+)([KMG]?)", text.strip().upper())
     if not m:
@@ -590,7 +699,7 @@ def main():
                    help="all: every mesh (decompose+mold on the 40 of the mold rule); smallest20: the 20 meshes "
                    "with the fewest triangles, every command on each")
     p.add_argument("--no-molds", action="store_true",
-                   help="run neither decompose nor mold (the ctest of the fast subset: info, repair, hollow, "
+                   help="run neither decompose nor mold (the ctest of the fast subset: info, check, repair, hollow, "
                    "drain and powder-sim)")
     p.add_argument("--only", nargs="*", help="rerun just these models (their rows are refreshed)")
     p.add_argument("--category", nargs="*", choices=sorted(MOLD_SHARE),
