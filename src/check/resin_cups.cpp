@@ -15,28 +15,11 @@
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/parallel_for.h>
 
+#include "core/disjoint_sets.h"
+
 namespace fabvdb::check {
 
 namespace {
-
-struct UnionFind {
-    std::vector<int32_t> parent;
-    int32_t add() {
-        parent.push_back(int32_t(parent.size()));
-        return parent.back();
-    }
-    int32_t find(int32_t a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    //! Joins the sets of a and b; returns the root kept.
-    int32_t join(int32_t a, int32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent[b] = a;
-        return a;
-    }
-};
 
 //! What a region node carries: its cells (print-frame index sums and box)
 //! and its opening cells.
@@ -102,9 +85,9 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
     });
     progress.check();
 
-    UnionFind sets;               // regions, joined through the layers
+    DisjointSets sets;            // regions, joined through the layers
     std::vector<uint8_t> outside; // per root of `sets`: reaches the outside
-    UnionFind cups;               // cup regions, joined into cups
+    DisjointSets cups;            // cup regions, joined into cups
     std::vector<uint8_t> is_cup;  // per region: sealed when its layer was added
     std::vector<Region> regions;
     std::vector<int32_t> below(layer_size, -1), here(layer_size, -1);
@@ -118,7 +101,7 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
         const int32_t first = int32_t(regions.size());
         for (size_t start = 0; start < layer_size; ++start) {
             if (layer[start] || here[start] >= 0) continue;
-            const int32_t id = sets.add();
+            const int32_t id = int32_t(sets.add());
             cups.add();
             outside.push_back(0);
             is_cup.push_back(0);
@@ -147,7 +130,7 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
         for (const auto& [a, b] : joins) {
             const int32_t ra = sets.find(a), rb = sets.find(b);
             const uint8_t reach = outside[ra] | outside[rb];
-            outside[sets.join(ra, rb)] = reach;
+            outside[sets.unite(ra, rb)] = reach;
         }
         bool any_cup = false;
         for (int32_t id = first; id < int32_t(regions.size()); ++id) {
@@ -155,7 +138,7 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
             any_cup = any_cup || is_cup[id];
         }
         for (const auto& [a, b] : joins) {
-            if (is_cup[a]) cups.join(a, b);  // b is a cup region too: it lies in a's sealed set
+            if (is_cup[a]) cups.unite(a, b);  // b is a cup region too: it lies in a's sealed set
         }
         // The cup regions' cells, and the opening cells: cup cells under
         // open space that is no cup.

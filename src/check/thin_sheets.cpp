@@ -5,22 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <unordered_map>
+
+#include "core/disjoint_sets.h"
+#include "core/vec3_ops.h"
 
 namespace fabvdb::check {
 
 namespace {
-
-struct Sets {
-    std::vector<int> parent;
-    explicit Sets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    void join(int a, int b) { parent[find(b)] = find(a); }
-};
 
 uint64_t cell_key(int64_t i, int64_t j, int64_t k) {
     constexpr int64_t bias = int64_t(1) << 20;
@@ -48,10 +40,10 @@ int border_loops(const Mesh& surface, const surface::TriangleRegion& region, dou
         border.emplace_back(index(a), index(b));
         length.push_back(std::sqrt(squared_distance(surface.vertices[a], surface.vertices[b])));
     }
-    Sets loops(local.size());
-    for (const auto& [a, b] : border) loops.join(a, b);
-    std::unordered_map<int, double> loop_length;
-    for (size_t e = 0; e < border.size(); ++e) loop_length[loops.find(border[e].first)] += length[e];
+    DisjointSets loops(local.size());
+    for (const auto& [a, b] : border) loops.unite(uint32_t(a), uint32_t(b));
+    std::unordered_map<uint32_t, double> loop_length;
+    for (size_t e = 0; e < border.size(); ++e) loop_length[loops.find(uint32_t(border[e].first))] += length[e];
     int count = 0;
     for (const auto& [root, total] : loop_length) count += total >= min_loop ? 1 : 0;
     return count;
@@ -68,34 +60,31 @@ std::vector<SheetReading> thin_sheets(const Mesh& surface, const std::vector<sur
     std::unordered_map<uint64_t, int> owner;  // medial cell → the first region there
     for (size_t r = 0; r < regions.size(); ++r)
         for (uint32_t v : regions[r].vertices) owner.emplace(key_of(centre[v], 0, 0, 0), int(r));
-    Sets sheets(regions.size());
+    DisjointSets sheets(regions.size());
     for (size_t r = 0; r < regions.size(); ++r)
         for (uint32_t v : regions[r].vertices)
             for (int d = 0; d < 27; ++d) {
                 const auto found = owner.find(key_of(centre[v], d % 3 - 1, d / 3 % 3 - 1, d / 9 - 1));
-                if (found != owner.end() && found->second != int(r)) sheets.join(found->second, int(r));
+                if (found != owner.end() && found->second != int(r)) sheets.unite(uint32_t(found->second), uint32_t(r));
             }
     std::vector<int> held(regions.size(), 0);
     std::vector<double> area(regions.size(), 0.0);
     std::vector<Vec3> facing(regions.size(), Vec3{0, 0, 0});  // the area-weighted normals' sum
     std::vector<SheetReading> readings(regions.size());
     for (size_t r = 0; r < regions.size(); ++r) {
-        const int sheet = readings[r].sheet = sheets.find(int(r));
+        const int sheet = readings[r].sheet = int(sheets.find(uint32_t(r)));
         held[sheet] += border_loops(surface, regions[r], min_loop);
         for (uint32_t t : regions[r].triangles) {
             const Vec3& a = surface.vertices[surface.triangles[t][0]];
-            const Vec3& b = surface.vertices[surface.triangles[t][1]];
-            const Vec3& c = surface.vertices[surface.triangles[t][2]];
-            const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-            const Vec3 twice{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-            for (int k = 0; k < 3; ++k) facing[sheet][k] += 0.5 * twice[k];
-            area[sheet] += 0.5 * std::sqrt(twice[0] * twice[0] + twice[1] * twice[1] + twice[2] * twice[2]);
+            const Vec3 twice = cross(surface.vertices[surface.triangles[t][1]] - a,
+                                     surface.vertices[surface.triangles[t][2]] - a);
+            facing[sheet] = facing[sheet] + 0.5 * twice;
+            area[sheet] += 0.5 * norm(twice);
         }
     }
     for (SheetReading& reading : readings) {
         reading.held_edges = held[reading.sheet];
-        const Vec3& f = facing[reading.sheet];
-        reading.two_sided = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) < 0.5 * area[reading.sheet];
+        reading.two_sided = norm(facing[reading.sheet]) < 0.5 * area[reading.sheet];
         reading.fin = reading.held_edges == 1 && reading.two_sided;
     }
     return readings;

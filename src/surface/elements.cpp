@@ -3,27 +3,17 @@
 #include "surface/elements.h"
 
 #include <algorithm>
-#include <numeric>
+
+#include "core/disjoint_sets.h"
 
 namespace fabvdb::surface {
-
-namespace {
-
-int find_root(std::vector<int>& parent, int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-}
-
-}  // namespace
 
 Elements make_elements(const Shell& shell, const std::vector<std::vector<uint32_t>>& no_cut_sets,
                        const std::vector<char>& domain) {
     const size_t n = shell.triangle_count();
-    std::vector<int> parent(n);
-    std::iota(parent.begin(), parent.end(), 0);
+    DisjointSets sets(n);
     const auto unite = [&](uint32_t a, uint32_t b) {
-        if (!domain[a] || !domain[b]) return;
-        parent[find_root(parent, int(a))] = find_root(parent, int(b));
+        if (domain[a] && domain[b]) sets.unite(a, b);
     };
     // Each set is joined through its first member in the domain.
     std::vector<int> first_of_segment;
@@ -46,7 +36,7 @@ Elements make_elements(const Shell& shell, const std::vector<std::vector<uint32_
     std::vector<int> element_of_root(n, -1);
     for (size_t t = 0; t < n; ++t) {
         if (!domain[t]) continue;
-        const int root = find_root(parent, int(t));
+        const uint32_t root = sets.find(uint32_t(t));
         if (element_of_root[root] < 0) {
             element_of_root[root] = int(elements.triangles.size());
             elements.triangles.emplace_back();

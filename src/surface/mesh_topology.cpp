@@ -4,29 +4,13 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
+
+#include "core/disjoint_sets.h"
 
 namespace fabvdb::surface {
 namespace {
 
 constexpr uint32_t none = std::numeric_limits<uint32_t>::max();
-
-class DisjointSets {
-public:
-    explicit DisjointSets(size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-    }
-
-private:
-    std::vector<uint32_t> parent_;
-};
 
 //! Corners are numbered 3·triangle + k. Two corners at the same vertex are in
 //! the same fan when their triangles share an edge from that vertex (or are

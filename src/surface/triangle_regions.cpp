@@ -2,37 +2,21 @@
 #include "surface/triangle_regions.h"
 
 #include <algorithm>
-#include <numeric>
 
+#include "core/disjoint_sets.h"
 #include "core/error.h"
 
 namespace fabvdb::surface {
 
-namespace {
-
-uint32_t root(std::vector<uint32_t>& parent, uint32_t v) {
-    while (parent[v] != v) {
-        parent[v] = parent[parent[v]];
-        v = parent[v];
-    }
-    return v;
-}
-
-}  // namespace
-
 std::vector<TriangleRegion> triangle_regions(const Mesh& mesh, const std::vector<uint8_t>& chosen) {
     if (chosen.size() != mesh.triangles.size())
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "triangle_regions: one flag per triangle is needed");
-    std::vector<uint32_t> parent(mesh.vertices.size());
-    std::iota(parent.begin(), parent.end(), 0u);
+    DisjointSets sets(mesh.vertices.size());
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         if (!chosen[t]) continue;
         const Triangle& tri = mesh.triangles[t];
-        const uint32_t a = root(parent, tri[0]);
-        for (int k = 1; k < 3; ++k) {
-            const uint32_t b = root(parent, tri[k]);
-            if (a != b) parent[b] = a;
-        }
+        sets.unite(tri[0], tri[1]);
+        sets.unite(tri[0], tri[2]);
     }
     std::vector<int64_t> region_of_root(mesh.vertices.size(), -1);
     std::vector<TriangleRegion> regions;
@@ -40,7 +24,7 @@ std::vector<TriangleRegion> triangle_regions(const Mesh& mesh, const std::vector
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         if (!chosen[t]) continue;
         const Triangle& tri = mesh.triangles[t];
-        const uint32_t r = root(parent, tri[0]);
+        const uint32_t r = sets.find(tri[0]);
         if (region_of_root[r] < 0) {
             region_of_root[r] = int64_t(regions.size());
             regions.emplace_back();

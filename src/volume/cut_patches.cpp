@@ -1,11 +1,10 @@
 //! The patches of a cut surface (see cut_patches.h).
 #include "volume/cut_patches.h"
 
-#include <numeric>
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "core/disjoint_sets.h"
 #include "volume/vertex_corners.h"
 
 namespace fabvdb::volume {
@@ -23,12 +22,7 @@ std::optional<Patches> cut_patches(const CutSurface& surface) {
                 opposite[3 * t + k] = other.count == 1 ? other.first : UINT32_MAX;
             }
     });
-    std::vector<uint32_t> parent(triangles.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto root = [&](uint32_t t) {
-        while (parent[t] != t) t = parent[t] = parent[parent[t]];
-        return t;
-    };
+    DisjointSets patches(triangles.size());
     std::vector<std::pair<uint32_t, uint32_t>> cut_sides;  // triangles
     for (size_t t = 0; t < triangles.size(); ++t)
         for (int k = 0; k < 3; ++k) {
@@ -38,7 +32,7 @@ std::optional<Patches> cut_patches(const CutSurface& surface) {
             // edge has a piece on its other side when it lies on a cut.
             const bool untouched = t < surface.first_piece && other < surface.first_piece;
             if (untouched || !surface.along_cut(a, b))
-                parent[root(uint32_t(t))] = root(other);
+                patches.unite(uint32_t(t), other);
             else if (a < b)
                 cut_sides.emplace_back(uint32_t(t), other);
         }
@@ -46,7 +40,7 @@ std::optional<Patches> cut_patches(const CutSurface& surface) {
     result.of_triangle.resize(triangles.size());
     std::vector<uint32_t> number(triangles.size(), UINT32_MAX);
     for (size_t t = 0; t < triangles.size(); ++t) {
-        uint32_t& n = number[root(uint32_t(t))];
+        uint32_t& n = number[patches.find(uint32_t(t))];
         if (n == UINT32_MAX) n = uint32_t(result.count++);
         result.of_triangle[t] = n;
     }

@@ -2,26 +2,13 @@
 #include "volume/mesh_shells.h"
 
 #include <cmath>
-#include <numeric>
+
+#include "core/disjoint_sets.h"
 
 namespace fabvdb::volume {
 
-namespace {
-
-struct Components {
-    std::vector<uint32_t> parent;
-    explicit Components(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t find(uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    }
-    void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
-};
-
-}  // namespace
-
 std::vector<MeshShell> split_shells(const Mesh& mesh) {
-    Components components(mesh.vertices.size());
+    DisjointSets components(mesh.vertices.size());
     for (const Triangle& t : mesh.triangles) {
         components.unite(t[0], t[1]);
         components.unite(t[1], t[2]);

@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
+#include "core/disjoint_sets.h"
 #include "volume/winding_number.h"
 
 namespace fabvdb::volume {
@@ -19,11 +20,6 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
-
-uint32_t find_root(std::vector<uint32_t>& parent, uint32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-}
 
 // A triangle's point indices in increasing order.
 Triangle sorted_corners(const Triangle& t) {
@@ -81,7 +77,7 @@ struct ReversalVisitor : CGAL::Polygon_mesh_processing::Default_orientation_visi
 // wholly inside the solid of the outward pieces (their winding number at
 // each of its points) is the wall of a cavity: it is turned back inward.
 // Other pieces stay outward.
-void keep_cavities_inward(Mesh& oriented, const std::vector<char>& as_given, std::vector<uint32_t>& parent) {
+void keep_cavities_inward(Mesh& oriented, const std::vector<char>& as_given, DisjointSets& pieces) {
     // Per piece (indexed by its root vertex): area whose input order agrees
     // with the outward one, and total area. An input stored inside out as a
     // whole (most of its area inward: its voids' walls then face out) is
@@ -96,7 +92,7 @@ void keep_cavities_inward(Mesh& oriented, const std::vector<char>& as_given, std
     const bool turned = all_agreeing < 0.5 * all;
     for (size_t i = 0; i < oriented.triangles.size(); ++i) {
         const Triangle& t = oriented.triangles[i];
-        const uint32_t root = find_root(parent, t[0]);
+        const uint32_t root = pieces.find(t[0]);
         const double area = triangle_area(oriented, t);
         total[root] += area;
         if (bool(as_given[i]) != turned) agreeing[root] += area;
@@ -109,18 +105,18 @@ void keep_cavities_inward(Mesh& oriented, const std::vector<char>& as_given, std
     Mesh outward;
     outward.vertices = oriented.vertices;
     for (const Triangle& t : oriented.triangles)
-        if (!cavity[find_root(parent, t[0])]) outward.triangles.push_back(t);
+        if (!cavity[pieces.find(t[0])]) outward.triangles.push_back(t);
     if (outward.triangles.empty()) return;
 
     // A cavity lies wholly inside: every one of its points (a piece that only
     // overlaps the solid is an inverted solid of its own, to be united).
     const WindingNumber solid(outward);
     for (uint32_t v = 0; v < oriented.vertices.size(); ++v) {
-        const uint32_t root = find_root(parent, v);
+        const uint32_t root = pieces.find(v);
         if (cavity[root] && solid(oriented.vertices[v]) < 0.5) cavity[root] = false;
     }
     for (Triangle& t : oriented.triangles)
-        if (cavity[find_root(parent, t[0])]) std::swap(t[1], t[2]);
+        if (cavity[pieces.find(t[0])]) std::swap(t[1], t[2]);
 }
 
 }  // namespace
@@ -149,23 +145,21 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
 
     // Connected pieces by shared vertices, then each piece's signed volume
     // about its own centroid (translation-invariant for open pieces too).
-    std::vector<uint32_t> parent(oriented.vertices.size());
-    std::iota(parent.begin(), parent.end(), 0u);
+    DisjointSets pieces(oriented.vertices.size());
     for (const Triangle& t : oriented.triangles) {
-        const uint32_t a = find_root(parent, t[0]);
-        parent[find_root(parent, t[1])] = a;
-        parent[find_root(parent, t[2])] = a;
+        pieces.unite(t[0], t[1]);
+        pieces.unite(t[0], t[2]);
     }
     std::vector<std::array<double, 4>> centroid(oriented.vertices.size(), {0, 0, 0, 0});
     for (const Triangle& t : oriented.triangles) {
-        auto& c = centroid[find_root(parent, t[0])];
+        auto& c = centroid[pieces.find(t[0])];
         for (uint32_t v : t)
             for (int k = 0; k < 3; ++k) c[k] += oriented.vertices[v][k];
         c[3] += 3.0;
     }
     std::vector<double> volume(oriented.vertices.size(), 0.0);
     for (const Triangle& t : oriented.triangles) {
-        const uint32_t root = find_root(parent, t[0]);
+        const uint32_t root = pieces.find(t[0]);
         const auto& c = centroid[root];
         Vec3 p[3];
         for (int i = 0; i < 3; ++i)
@@ -176,12 +170,12 @@ Mesh orient_soup(const Mesh& mesh, Progress& progress) {
     std::vector<char> as_given(oriented.triangles.size());
     for (size_t i = 0; i < oriented.triangles.size(); ++i) {
         Triangle& t = oriented.triangles[i];
-        const bool flip = volume[find_root(parent, t[0])] < 0.0;
+        const bool flip = volume[pieces.find(t[0])] < 0.0;
         if (flip) std::swap(t[1], t[2]);
         as_given[i] = !(reversed[i] ^ flip);
     }
     progress.update(0.9);
-    keep_cavities_inward(oriented, as_given, parent);
+    keep_cavities_inward(oriented, as_given, pieces);
     progress.update(1.0);
     return oriented;
 }
