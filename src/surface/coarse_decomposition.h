@@ -8,10 +8,7 @@
 //! (the mold fills or half-trims such a gap, so a deep one leaves the input
 //! far from the cast part even when its area, and so E_P, is small). Past the
 //! first attempt under γ, at most `depth_attempts` more parts are tried for
-//! depth, each seeded where the last one was deepest when that one was under
-//! γ (its regions' seeds and directions, plus the element at its deepest
-//! undercut facing its normal: a part can grow there with a direction that
-//! casts the gap), else at random; then the attempt under γ with the shallowest deepest undercut is kept
+//! depth; then the attempt under γ with the shallowest deepest undercut is kept
 //! (the one with fewer parts on a tie). When no attempt gets under γ (the part
 //! cap), the lowest-energy attempt is kept. Also the state a decomposition is
 //! carried in through edits and output.
@@ -24,7 +21,6 @@
 #include "core/progress.h"
 #include "surface/parting_line.h"
 #include "surface/region_growing.h"
-#include "surface/undercut_depth.h"
 
 namespace fabvdb::surface {
 
@@ -38,10 +34,9 @@ struct DecompositionOptions {
     double smoothness_weight = 1.0;   //!< w_l of the boundary smoothing (eq. 3.3)
     int smoothing_iterations = 10;    //!< boundary-smoothing iterations (0: none)
     //! Bound on each part's undercut depth, unit-cube lengths (fraction of the
-    //! longest side). The depth is an upper bound of how deep the mold buries
-    //! the input (0.6–1.0 of it on the corpus), so 0.013 keeps what it buries
-    //! within about 1% of the diagonal. Infinity: no bound (the γ-only search).
-    double max_undercut_depth = 0.013;
+    //! longest side): 0.02 keeps half of it, what trimming may leave, within
+    //! 1% of the diagonal. Infinity: no bound (the γ-only search).
+    double max_undercut_depth = 0.02;
     int depth_attempts = 3;           //!< parts added past the first attempt under γ, for depth
 };
 
@@ -59,9 +54,8 @@ double undercut_line_spacing(const Shell& shell);
 double undercut_reach(const Shell& shell, const DecompositionOptions& options);
 
 //! The deepest undercut over the parts of `d` (undercut_depth.h), millimetres,
-//! measured up to `reach`, and where it is.
-UndercutDepth deepest_undercut(const Shell& shell, const MoldabilityTerms& terms, const Decomposition& d,
-                               double reach);
+//! measured up to `reach`.
+double deepest_undercut(const Shell& shell, const MoldabilityTerms& terms, const Decomposition& d, double reach);
 
 //! Parting lines for every part of `part_of_triangle` with the given directions.
 std::vector<PartMolding> parting_lines(const Shell& shell, const MoldabilityTerms& terms,

@@ -220,7 +220,6 @@ Regions grow_regions(const Shell& shell, const MoldabilityTerms& terms, const El
         const std::vector<int> next_directions = grower.best_directions(region_count);
         const std::vector<int> next_seeds = grower.best_seeds(next_directions);
         regions.direction = next_directions;
-        regions.seed = seeds;
         if (next_seeds == seeds && next_directions == directions) break;
         seeds = next_seeds;
         directions = next_directions;

@@ -21,7 +21,6 @@ namespace fabvdb::surface {
 struct Regions {
     std::vector<int> region_of_triangle;  //!< −1 outside the domain
     std::vector<int> direction;           //!< per region: index into terms.directions
-    std::vector<int> seed;                //!< per region: the element it grew from last
     int iterations = 0;
     std::vector<double> cost_per_iteration;  //!< Σ_r Σ_{t∈r} C(t, r) after each growth
 };
