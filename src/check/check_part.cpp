@@ -461,6 +461,35 @@ nlohmann::json build_check(const Mesh& mesh, const Vec3& up, const Vec3& volume)
     return check;
 }
 
+// The report of an input that encloses no volume (an open sheet, a soup of
+// loose triangles): it fails, the mesh check saying why, and every check
+// measured on the solid fails with it, since there is nothing to print.
+nlohmann::json no_solid_report(nlohmann::json checks, const BoundingBox& box, double voxel, const std::string& why,
+                               const ProcessProfile& p, const StageClock& clock,
+                               const std::map<std::string, double>& stages) {
+    nlohmann::json& mesh = checks["mesh"];
+    std::string defects = mesh["message"].get<std::string>();
+    defects = defects.substr(0, defects.find("; `fabvdb repair`"));  // it would refuse this input too
+    if (mesh["status"] == status_names[pass]) defects = "closed and manifold, but flat";
+    mesh["message"] = defects + "; encloses no volume (an open sheet, loose triangles or pieces wound every which "
+                                "way), so there is no solid to print; `fabvdb repair --thicken LEN` makes a sheet a solid";
+    mesh["status"] = status_names[fail];
+    mesh["no_solid"] = why;
+    checks["units"] = units_check(box, 0.0);
+    for (const char* name : {"wall_thickness", "small_features", "holes", "trapped_volumes", "overhangs", "cups"})
+        checks[name] = verdict(fail, "not measured: the mesh encloses no volume");
+    nlohmann::json report;
+    report["verdict"] = status_names[fail];
+    report["process"] = profile_json(p);
+    report["voxel_size"] = voxel;
+    report["surface_vertices"] = 0;
+    report["checks"] = std::move(checks);
+    report["warnings"] = nlohmann::json::array();
+    for (const auto& item : stages) report["timings"][item.first] = item.second;
+    report["timings"]["total"] = clock.total();
+    return report;
+}
+
 }  // namespace
 
 nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progress& progress) {
@@ -495,7 +524,15 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     sdf.memory_budget_bytes = options.memory_budget_bytes;
     sdf.input_name = options.input_name;
     volume::SignedDistanceStats stats;
-    openvdb::FloatGrid::Ptr grid = volume::signed_distance_from_mesh(mesh, sdf, progress, &stats);
+    openvdb::FloatGrid::Ptr grid;
+    try {
+        grid = volume::signed_distance_from_mesh(mesh, sdf, progress, &stats);
+    } catch (const Error& e) {
+        if (e.status() != FABVDB_ERR_BAD_INPUT) throw;
+        if (options.build_volume[0] > 0.0 && options.build_volume[1] > 0.0 && options.build_volume[2] > 0.0)
+            checks["build_volume"] = build_check(mesh, options.up, options.build_volume);
+        return no_solid_report(std::move(checks), box, voxel, e.what(), p, clock, stages);
+    }
     clock.add_laps(stats.timings);
     // Each walk's side of the band reaches its radius and the ridge fit's
     // samples beyond it (local_thickness.h), the other side those samples.

@@ -296,5 +296,23 @@ TEST(CheckPart, FinsAndHeldWalls) {
     EXPECT_EQ(rounded["checks"]["mesh"]["repair_path"], "none");
 }
 
+TEST(CheckPart, OpenSheetFailsWithAVerdictForEveryCheck) {
+    // An open box (no lid) encloses no volume: the check fails it, the mesh
+    // check saying why, instead of refusing it as bad input; the build
+    // volume, measured on the triangles, is still judged.
+    const nlohmann::json report = run(test::make_open_box({0, 0, 0}, {20, 20, 10}), "sla", 0.0, {0, 0, 1},
+                                      {250, 210, 220});
+    EXPECT_EQ(report["verdict"], "fail");
+    EXPECT_EQ(status(report, "mesh"), "fail");
+    EXPECT_NE(report["checks"]["mesh"]["message"].get<std::string>().find("encloses no volume"), std::string::npos);
+    EXPECT_TRUE(report["checks"]["mesh"]["no_solid"].is_string());
+    EXPECT_EQ(status(report, "units"), "pass");
+    EXPECT_EQ(status(report, "build_volume"), "pass");
+    for (const char* name : {"wall_thickness", "small_features", "holes", "trapped_volumes", "overhangs", "cups"})
+        EXPECT_EQ(status(report, name), "fail") << name;
+    // The same box closed is measured.
+    EXPECT_NE(run(test::make_box({0, 0, 0}, {20, 20, 10}))["checks"]["mesh"]["status"], "fail");
+}
+
 }  // namespace
 }  // namespace fabvdb::check
