@@ -525,7 +525,8 @@ json check_solid(int argc, char** argv) {
         // A void shell lying on the input's surface (the median distance of
         // its vertices to it under 1% of the diagonal: kept as it was, or as
         // a repair rebuilt it, while a cavity made lies a wall deep) whose
-        // inside is outside the input (winding number under 1/2 at most
+        // inside is outside the input (|winding number| under 1/2, so an
+        // input stored inside out reads the same, at most
         // points just inside it: a soup's inner triangles may lie near a
         // cavity made, but do not enclose it) is the input's own void: the
         // cavities made are the others, and their wall is measured to the
@@ -555,7 +556,7 @@ json check_solid(int argc, char** argv) {
                 if (depth[s][depth[s].size() / 2] >= 0.01 * box.diagonal()) continue;
                 int outside = 0, inside = 0;
                 for (const Vec3& p : points_in_void(mesh, labels, uint32_t(s), box.diagonal()))
-                    (winding_number(input, p) < 0.5 ? outside : inside) += 1;
+                    (std::abs(winding_number(input, p)) < 0.5 ? outside : inside) += 1;
                 if (outside > inside) {
                     made[s] = 0;
                     ++own_voids;
