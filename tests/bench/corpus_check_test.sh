@@ -37,11 +37,12 @@ cell() {  # the check cell's result and figure of a model in OUT ($1)
     "$WORK/$1/runs/$2/record.json"
 }
 
-# The real fabvdb: every model ok, with a verdict and seven statuses.
+# The real fabvdb: every model ok, with a verdict and eight statuses.
 expect_exit 0 "${RUN[@]}" --fabvdb "$FABVDB" --out "$WORK/real"
 for model in cube_no_bottom.obj two_cubes.obj joined_tetrahedra.obj; do
   expect_match "$(cell real "$model")" '^ok '
   expect_match "$(cat "$WORK/real/runs/$model/record.json")" '"overhangs": "\(pass\|warn\|fail\)"'
+  expect_match "$(cat "$WORK/real/runs/$model/record.json")" '"cups": "\(pass\|warn\|fail\)"'
 done
 expect_match "$(cat "$WORK/real/results.md")" '| wall_thickness | [0-9]'
 
