@@ -138,4 +138,5 @@ def main():
         numpy.savetxt(sys.argv[6], classes, fmt="%d")
 
 
-main()
+if __name__ == "__main__":
+    main()

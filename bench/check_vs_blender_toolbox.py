@@ -20,6 +20,7 @@
 # exactly the add-on's. Costs six ray casts per triangle in Blender's Python,
 # about 10 µs each, twice.
 import json
+import os
 import sys
 import time
 
@@ -29,17 +30,8 @@ import numpy
 
 from object_print3d_utils import mesh_helpers
 
-
-def read_obj(path):
-    vertices, triangles = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("v "):
-                vertices.append([float(x) for x in line.split()[1:4]])
-            elif line.startswith("f "):
-                triangles.append([int(x.split("/")[0]) - 1 for x in line.split()[1:4]])
-    return (numpy.array(vertices, dtype=numpy.float64).reshape(-1, 3),
-            numpy.array(triangles, dtype=numpy.int64).reshape(-1, 3))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_vs_blender_compare import read_obj  # noqa: E402 (found beside this script)
 
 
 def own_ray_hits(obj, thickness):
