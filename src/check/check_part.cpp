@@ -461,6 +461,23 @@ nlohmann::json build_check(const Mesh& mesh, const Vec3& up, const Vec3& volume)
     return check;
 }
 
+// The report around the checks: the verdict is the worst check's status.
+nlohmann::json assemble_report(nlohmann::json checks, const ProcessProfile& p, double voxel, size_t surface_vertices,
+                               const StageClock& clock, const std::map<std::string, double>& stages) {
+    Status worst = pass;
+    for (const auto& item : checks.items()) worst = std::max(worst, status_of(item.value()));
+    nlohmann::json report;
+    report["verdict"] = status_names[worst];
+    report["process"] = profile_json(p);
+    report["voxel_size"] = voxel;
+    report["surface_vertices"] = surface_vertices;
+    report["checks"] = std::move(checks);
+    report["warnings"] = nlohmann::json::array();
+    for (const auto& item : stages) report["timings"][item.first] = item.second;
+    report["timings"]["total"] = clock.total();
+    return report;
+}
+
 // The report of an input that encloses no volume (an open sheet, a soup of
 // loose triangles): it fails, the mesh check saying why, and every check
 // measured on the solid fails with it, since there is nothing to print.
@@ -478,16 +495,7 @@ nlohmann::json no_solid_report(nlohmann::json checks, const BoundingBox& box, do
     checks["units"] = units_check(box, 0.0);
     for (const char* name : {"wall_thickness", "small_features", "holes", "trapped_volumes", "overhangs", "cups"})
         checks[name] = verdict(fail, "not measured: the mesh encloses no volume");
-    nlohmann::json report;
-    report["verdict"] = status_names[fail];
-    report["process"] = profile_json(p);
-    report["voxel_size"] = voxel;
-    report["surface_vertices"] = 0;
-    report["checks"] = std::move(checks);
-    report["warnings"] = nlohmann::json::array();
-    for (const auto& item : stages) report["timings"][item.first] = item.second;
-    report["timings"]["total"] = clock.total();
-    return report;
+    return assemble_report(std::move(checks), p, voxel, 0, clock, stages);
 }
 
 }  // namespace
@@ -503,6 +511,8 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     nlohmann::json checks;
     progress.stage("inspect");
     checks["mesh"] = mesh_check(mesh, progress);
+    if (options.build_volume[0] > 0.0 && options.build_volume[1] > 0.0 && options.build_volume[2] > 0.0)
+        checks["build_volume"] = build_check(mesh, options.up, options.build_volume);
     clock.lap("inspect");
 
     const BoundingBox box = bounding_box(mesh);
@@ -529,8 +539,6 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
         grid = volume::signed_distance_from_mesh(mesh, sdf, progress, &stats);
     } catch (const Error& e) {
         if (e.status() != FABVDB_ERR_BAD_INPUT) throw;
-        if (options.build_volume[0] > 0.0 && options.build_volume[1] > 0.0 && options.build_volume[2] > 0.0)
-            checks["build_volume"] = build_check(mesh, options.up, options.build_volume);
         return no_solid_report(std::move(checks), box, voxel, e.what(), p, clock, stages);
     }
     clock.add_laps(stats.timings);
@@ -562,8 +570,6 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
     checks["holes"] = hole_check(surface, gaps, p);
     checks["trapped_volumes"] = cavity_check(surface, shells, p);
     checks["overhangs"] = overhang_check(surface, options.up, voxel, p);
-    if (options.build_volume[0] > 0.0 && options.build_volume[1] > 0.0 && options.build_volume[2] > 0.0)
-        checks["build_volume"] = build_check(mesh, options.up, options.build_volume);
     clock.lap("judge");
     checks["cups"] = cup_check(*grid, surface, options.up, p, progress);
     clock.lap("cups");
@@ -580,18 +586,7 @@ nlohmann::json check_part(const Mesh& mesh, const CheckOptions& options, Progres
         clock.lap("thickness map");
     }
 
-    Status worst = pass;
-    for (const auto& item : checks.items()) worst = std::max(worst, status_of(item.value()));
-    nlohmann::json report;
-    report["verdict"] = status_names[worst];
-    report["process"] = profile_json(p);
-    report["voxel_size"] = voxel;
-    report["surface_vertices"] = surface.vertices.size();
-    report["checks"] = checks;
-    report["warnings"] = nlohmann::json::array();
-    for (const auto& item : stages) report["timings"][item.first] = item.second;
-    report["timings"]["total"] = clock.total();
-    return report;
+    return assemble_report(std::move(checks), p, voxel, surface.vertices.size(), clock, stages);
 }
 
 }  // namespace fabvdb::check
