@@ -339,6 +339,7 @@ void drain(fabvdb_ctx* ctx, const fabvdb_mesh* mesh, const fabvdb_drain_options*
         report["filled_cavities"].push_back({{"center", vec_json(center)}, {"radius", radius}});
     report["fidelity"] = fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits);
     report["voxel_size"] = result.voxel_size;
+    report["surface_voxel"] = result.surface_voxel;
     report["repose_degrees"] = o.repose_degrees;
     report["effort"] = o.effort;
     report["orientations"] = o.orientations ? o.orientation_count : size_t(162);

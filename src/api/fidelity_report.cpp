@@ -8,6 +8,7 @@ nlohmann::json fidelity_report(const volume::Fidelity& fidelity, const volume::F
                              {"max_distance", fidelity.max},
                              {"mean_distance", fidelity.mean},
                              {"far_fraction", fidelity.far_share},
+                             {"far_sheet_fraction", fidelity.far_sheet_share},
                              {"far_distance", limits.distance},
                              {"allowed_far_fraction", limits.far_share},
                              {"samples", fidelity.samples},

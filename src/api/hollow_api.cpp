@@ -49,6 +49,7 @@ nlohmann::json report_of(const HollowResult& result, const HollowOptions& option
     report["adaptivity"] = options.adaptivity;
     report["min_cavity_volume"] = options.min_cavity_volume;
     report["outer_surface"] = result.outer_surface;
+    if (result.outer_surface == "repaired") report["outer_surface_voxel"] = result.outer_surface_voxel;
     report["fidelity"] = result.outer_surface == "input"
                              ? fabvdb::api::fidelity_report_kept()
                              : fabvdb::api::fidelity_report(result.fidelity, result.fidelity_limits);

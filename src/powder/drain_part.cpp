@@ -1,6 +1,7 @@
 //! `fabvdb drain` on a mesh (see drain_part.h).
 #include "powder/drain_part.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetUtil.h>
+#include <openvdb/tools/GridTransformer.h>
 #include <openvdb/tools/MeshToVolume.h>
 
 #include "core/error.h"
@@ -135,6 +137,9 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
 
     // A closed mesh of the part's outer shells and its voids' shells (inward).
     Mesh shells_mesh;
+    // The voxel the drilled part is meshed at: the outer surface's, finer
+    // than the hollowing's where that lost thin features (faithful_repair.h).
+    double surface_voxel = voxel;
     result.input_was_hollow = is_hollow_shell(input, progress);
     if (result.input_was_hollow) {
         volume::SignedDistanceOptions distance;
@@ -152,6 +157,7 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
         volume::HollowResult hollowed = volume::hollow(input, hollow, progress);
         shells_mesh = std::move(hollowed.mesh);
         result.warnings = std::move(hollowed.warnings);
+        if (hollowed.outer_surface_voxel > 0.0) surface_voxel = std::min(voxel, hollowed.outer_surface_voxel);
         clock.lap("hollow");
     }
     progress.stage("level sets");
@@ -217,7 +223,21 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
         cylinder.radius = 0.5 * hole.diameter;
         cylinders.push_back(cylinder);
     }
-    const openvdb::FloatGrid::Ptr drilled = volume::drill_holes(*result.shell, cylinders, progress);
+    // Planned at the hollowing's voxel; drilled into the part and the final
+    // cavity taken to the outer surface's voxel when that is finer.
+    openvdb::FloatGrid::ConstPtr shell = result.shell;
+    if (surface_voxel < voxel) {
+        const openvdb::FloatGrid::Ptr fine_part = level_set_of(shells.outer, surface_voxel);
+        const openvdb::FloatGrid::Ptr fine_cavity = openvdb::FloatGrid::create(fine_part->background());
+        fine_cavity->setTransform(fine_part->transform().copy());
+        fine_cavity->setGridClass(openvdb::GRID_LEVEL_SET);
+        openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(*cavity, *fine_cavity);
+        shell = openvdb::tools::csgDifferenceCopy(*fine_part, *fine_cavity);
+        progress.check();
+        clock.lap("level sets at the surface's voxel");
+    }
+    result.surface_voxel = surface_voxel;
+    const openvdb::FloatGrid::Ptr drilled = volume::drill_holes(*shell, cylinders, progress);
     clock.lap("drill");
     result.drilled = volume::extract_mesh(*drilled, 0.0, progress);
     clock.lap("extract");

@@ -40,6 +40,9 @@ struct DrainPartResult {
     std::vector<std::string> warnings;
     bool input_was_hollow = false;
     double voxel_size = 0.0;
+    //! mm, the voxel the drilled part was meshed at: voxel_size, or the
+    //! outer surface's where hollowing refined it to keep thin features.
+    double surface_voxel = 0.0;
     openvdb::FloatGrid::Ptr shell;  //!< undrilled, negative in the wall
     DrainPlan plan;
     //! Balls (centre, radius, mm) holding the cavities left solid, too small

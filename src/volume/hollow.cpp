@@ -19,6 +19,7 @@
 #include "volume/cavity_regions.h"
 #include "volume/clean_solid.h"
 #include "volume/extract_mesh.h"
+#include "volume/faithful_repair.h"
 #include "volume/input_fidelity.h"
 #include "volume/memory_estimate.h"
 #include "volume/mesh_shells.h"
@@ -32,6 +33,10 @@
 namespace fabvdb::volume {
 
 namespace {
+
+//! Halvings of the hollowing's voxel a repaired outer surface that lost the
+//! model gets: 0.5 mm (a 2 mm wall) becomes at most 0.125 mm.
+constexpr int kOuterSurfaceRefinements = 2;
 
 void require(bool ok, const std::string& message) {
     if (!ok) throw Error(FABVDB_ERR_INVALID_ARGUMENT, message);
@@ -156,18 +161,23 @@ Mesh outer_surface(const Mesh& input, const HollowOptions& options, double voxel
         result.outer_surface = "resolved";
         return std::move(*resolved);
     }
+    // At the hollowing's voxel, coarser than a repair's, thin features of a
+    // dirty input may be lost: the outer surface is refined until it is the
+    // input's model (faithful_repair.h).
     RepairOptions repair_options;
     repair_options.distance.voxel_size = voxel;
     repair_options.distance.memory_budget_bytes = options.memory_budget_bytes;
     repair_options.distance.input_name = options.input_name;
-    RepairResult repaired = repair_in_frame(input, repair_options, frame, progress);
+    FaithfulRepair repaired =
+        faithful_repair(input, input, repair_options, kOuterSurfaceRefinements, &frame, progress);
     result.outer_surface = "repaired";
+    result.outer_surface_voxel = repaired.voxels.back();
+    result.warnings.insert(result.warnings.end(), repaired.warnings.begin(), repaired.warnings.end());
+    result.fidelity_limits = repaired.limits;
+    result.fidelity = repaired.fidelity;
     clock.lap("repair");
-    result.fidelity_limits = voxel_limits(voxel);
-    result.fidelity = measure_fidelity(input, repaired.mesh, result.fidelity_limits, progress, repaired.grid.get());
     require_faithful(result.fidelity, options.input_name, "hollowed part's outer surface");
-    clock.lap("fidelity");
-    return std::move(repaired.mesh);
+    return std::move(repaired.repaired.mesh);
 }
 
 //! The cavity's surface, before the snap: the core at -(wall + opening) of

@@ -15,8 +15,10 @@
 //! Guarantees: outer shells face out, cavity shells face in, every shell is
 //! closed and no cavity triangle touches the outer surface (checked exactly);
 //! the outer surface is the input's model (input_fidelity.h: a union of
-//! crossing shells that is not is replaced by the repaired surface, and a
-//! repaired surface that is not stops the hollowing with Error(INTERNAL));
+//! crossing shells that is not is replaced by the repaired surface, a
+//! repaired surface that is not is repaired again at up to two halvings of
+//! the voxel, faithful_repair.h, and one that still is not stops the
+//! hollowing with Error(INTERNAL));
 //! regions thinner than 2·(wall + opening) stay solid (a part thinner than
 //! that everywhere comes back solid, with a warning); voids under
 //! `min_cavity_volume` are filled. An optional gyroid strut infill is carved out of the cavity
@@ -63,6 +65,9 @@ struct HollowResult {
     Fidelity fidelity;
     FidelityLimits fidelity_limits;
     double voxel_size = 0.0;
+    //! mm, the voxel a repaired outer surface was made at: voxel_size, or
+    //! finer where that lost thin features (faithful_repair.h); 0 otherwise.
+    double outer_surface_voxel = 0.0;
     double volume_solid = 0.0;   //!< mm³ enclosed by the outer surface
     double volume_shell = 0.0;   //!< mm³ of material left
     std::vector<double> cavity_volumes;         //!< mm³ per void kept

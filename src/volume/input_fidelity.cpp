@@ -13,7 +13,6 @@
 #include <sstream>
 #include <vector>
 
-#include <openvdb/tools/Interpolation.h>
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
@@ -131,22 +130,21 @@ void require_faithful(const Fidelity& fidelity, const std::string& input_name, c
 
 namespace {
 
-Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLimits& limits, Progress& progress,
-                         const openvdb::FloatGrid* level_set);
+Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLimits& limits, Progress& progress);
 
 }  // namespace
 
 Fidelity measure_fidelity(const Mesh& input, const Mesh& output, const FidelityLimits& limits,
-                          Progress& progress, const openvdb::FloatGrid* level_set) {
+                          Progress& progress) {
     progress.stage("fidelity to the input");
-    Fidelity result = measure_against(input, output, limits, progress, level_set);
+    Fidelity result = measure_against(input, output, limits, progress);
     if (result.passed || input.triangles.empty() || output.triangles.empty()) return result;
     // Shells wound every which way have no one solid by their winding
     // number (an inside-out box overlapping an outward one cancels it): the
     // input oriented as the repair orients it (orient_soup.h) decides.
     const Mesh oriented = orient_soup(input, progress);
     if (oriented.triangles.empty()) return result;
-    Fidelity again = measure_against(oriented, output, limits, progress, level_set);
+    Fidelity again = measure_against(oriented, output, limits, progress);
     if (!again.passed) return result;
     again.oriented_reference = true;
     return again;
@@ -154,8 +152,7 @@ Fidelity measure_fidelity(const Mesh& input, const Mesh& output, const FidelityL
 
 namespace {
 
-Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLimits& limits, Progress& progress,
-                         const openvdb::FloatGrid* level_set) {
+Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLimits& limits, Progress& progress) {
     Fidelity result;
     if (input.triangles.empty() || output.triangles.empty()) {
         result.passed = false;
@@ -168,37 +165,36 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
     const double diagonal = box.diagonal();
     const double probe = 1e-4 * diagonal;
 
-    // A first distance per sample, at no more cost than the output needs:
-    // read from its level set; else 0 on a triangle it kept from the input,
-    // and an upper bound from the triangles it did not keep. Samples that
-    // stay farther than the limit are measured exactly on the whole output.
+    // A first distance per sample, at no more cost than the output needs: 0
+    // on a triangle it kept from the input, else the distance to the
+    // triangles it did not keep (exact when it kept none, an upper bound
+    // otherwise). Samples that stay farther than the limit are measured
+    // exactly on the whole output.
     std::vector<double> distance(samples.size(), 0.0);
-    if (level_set) {
-        openvdb::FloatGrid::ConstAccessor values = level_set->getConstAccessor();
-        for (size_t i = 0; i < samples.size(); ++i) {
-            const Vec3& p = samples[i].point;
-            distance[i] = std::abs(double(openvdb::tools::BoxSampler::sample(
-                values, level_set->worldToIndex(openvdb::Vec3d(p[0], p[1], p[2])))));
-        }
+    const std::vector<uint64_t> input_hashes = sorted_hashes(input);
+    const std::vector<uint64_t> output_hashes = sorted_hashes(output);
+    Mesh added{output.vertices, {}};
+    for (const Triangle& t : output.triangles)
+        if (!holds(input_hashes, corner_hash(output, t))) added.triangles.push_back(t);
+    const bool first_look_exact = added.triangles.size() == output.triangles.size();
+    if (!added.triangles.empty()) {
+        const SurfaceDistance to_added(added);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, samples.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t i = r.begin(); i != r.end(); ++i)
+                if (!holds(output_hashes, corner_hash(input, input.triangles[samples[i].triangle])))
+                    distance[i] = to_added.nearest(samples[i].point).distance;
+        });
     } else {
-        const std::vector<uint64_t> input_hashes = sorted_hashes(input);
-        const std::vector<uint64_t> output_hashes = sorted_hashes(output);
-        Mesh added{output.vertices, {}};
-        for (const Triangle& t : output.triangles)
-            if (!holds(input_hashes, corner_hash(output, t))) added.triangles.push_back(t);
-        std::unique_ptr<SurfaceDistance> to_added;
-        if (!added.triangles.empty()) to_added = std::make_unique<SurfaceDistance>(added);
-        for (size_t i = 0; i < samples.size(); ++i) {
-            if (holds(output_hashes, corner_hash(input, input.triangles[samples[i].triangle]))) continue;
-            distance[i] = to_added ? to_added->nearest(samples[i].point).distance
-                                   : std::numeric_limits<double>::infinity();
-        }
+        for (size_t i = 0; i < samples.size(); ++i)
+            if (!holds(output_hashes, corner_hash(input, input.triangles[samples[i].triangle])))
+                distance[i] = std::numeric_limits<double>::infinity();
     }
     progress.check();
     progress.update(0.2);
 
-    // Samples that may be far: those in an exempt ball, or on input surface
-    // that bounds no solid, are left out; the others are measured exactly.
+    // Samples that may be far: those in an exempt ball, on inner faces or
+    // on the wall of a narrow slit are left out; the others are measured
+    // exactly.
     std::unique_ptr<WindingNumber> winding;
     const auto winding_tree = [&]() -> const WindingNumber& {
         if (!winding) winding = std::make_unique<WindingNumber>(input);
@@ -210,7 +206,7 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
         });
     };
     std::vector<size_t> unsure;
-    std::vector<char> bounds(samples.size(), 1);
+    std::vector<char> bounds(samples.size(), 1), sheet(samples.size(), 0);
     for (size_t i = 0; i < samples.size(); ++i) {
         if (!(distance[i] > limits.distance)) continue;
         if (exempt(samples[i].point))
@@ -225,14 +221,22 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
                 const Sample& s = samples[unsure[k]];
                 const double front = std::abs(w(s.point + probe * s.normal));
                 const double back = std::abs(w(s.point - probe * s.normal));
-                const bool one_side = (front >= 0.5) != (back >= 0.5);
-                bool wall = one_side && std::abs(front - back) >= 0.5;
+                if (front >= 0.5 && back >= 0.5) {  // an inner face
+                    bounds[unsure[k]] = 0;
+                    continue;
+                }
+                // No clear solid on either side (a sheet, whose winding
+                // number is about ±½ on its two sides; a scan's loose flap):
+                // surface the output must hold all the same.
+                if (std::max(front, back) < 0.75) {
+                    sheet[unsure[k]] = 1;
+                    continue;
+                }
                 // The wall of a slit narrower than the far distance, whose
                 // other side the solid holds again within it, may close.
                 const double open = front >= 0.5 ? -1.0 : 1.0;  // towards the slit
                 for (double along : {0.5 * limits.distance, limits.distance})
-                    wall = wall && std::abs(w(s.point + open * along * s.normal)) < 0.5;
-                bounds[unsure[k]] = wall;
+                    if (std::abs(w(s.point + open * along * s.normal)) >= 0.5) bounds[unsure[k]] = 0;
             }
         });
         progress.check();
@@ -240,9 +244,8 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
                      unsure.end());
     }
     progress.update(0.5);
-    if (!unsure.empty()) {
+    if (!unsure.empty() && !first_look_exact) {
         const SurfaceDistance surface(output);
-        surface.nearest(samples[unsure[0]].point);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, unsure.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
             if (progress.cancelled()) return;
             for (size_t k = r.begin(); k != r.end(); ++k)
@@ -251,7 +254,7 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
     }
     progress.check();
     progress.update(0.7);
-    size_t counted = 0, far_counted = 0;
+    size_t counted = 0, far_counted = 0, far_sheet = 0;
     double sum = 0.0;
     for (size_t i = 0; i < samples.size(); ++i) {
         if (!bounds[i]) {
@@ -262,13 +265,19 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
         sum += distance[i];
         result.max = std::max(result.max, distance[i]);
         far_counted += distance[i] > limits.distance;
+        far_sheet += sheet[i] && distance[i] > limits.distance;
     }
     result.mean = counted ? sum / double(counted) : 0.0;
     result.far_share = counted ? double(far_counted) / double(counted) : 0.0;
+    result.far_sheet_share = counted ? double(far_sheet) / double(counted) : 0.0;
     std::ostringstream defect;
-    if (result.far_share > limits.far_share)
+    if (result.far_share > limits.far_share) {
         defect << figure(100.0 * result.far_share) << "% of the input's surface lies farther than "
                << figure(limits.distance) << " mm from it (at most " << figure(result.max) << " mm)";
+        if (far_sheet > 0)
+            defect << ", " << figure(100.0 * result.far_sheet_share)
+                   << "% on surface with no clear solid on either side (an open sheet, a loose flap)";
+    }
 
     if (limits.volume) {
         const WindingNumber& w = winding_tree();

@@ -5,15 +5,17 @@
 //! Measures, at kFidelitySamples points spread over the input's surface by area (a
 //! fixed seed: the same figures on every run), the distance to the output's
 //! surface. A point farther than `limits.distance` counts against the output
-//! only where the input's surface bounds the solid it stands for: the
-//! generalized winding number (winding_number.h) 1e-4 of the diagonal
-//! behind and in front of it, along its triangle's normal, is at least ½ in
-//! magnitude on exactly one side and the two differ by at least ½ (the inner
-//! faces of overlapping shells, and sheets open on both sides, bound
-//! nothing), and the open side stays open half and all of `limits.distance`
-//! away (the walls of a slit narrower than that, such as the gaps between
-//! the convex pieces of a VHACD mesh, may close). The output fails when more than `limits.far_share` of the
-//! solid's surface is far, or, with `limits.volume`, when the volume it
+//! unless it lies on an inner face (the generalized winding number,
+//! winding_number.h, 1e-4 of the diagonal behind and in front of it along
+//! its triangle's normal, is at least ½ in magnitude on both sides: a shell
+//! inside another), on the wall of a slit narrower than `limits.distance`
+//! (the solid on one side only, and again on the open side half or all of
+//! `limits.distance` away: the gaps between the convex pieces of a VHACD
+//! mesh may close) or in an exempt ball. Surface with no clear solid on
+//! either side (|w| under ¾ on both: a sheet, whose winding number is about
+//! ±½ on its two sides, or a scan's loose flap) counts: the model has it.
+//! The output fails when more than `limits.far_share` of the counted surface
+//! is far, or, with `limits.volume`, when the volume it
 //! encloses and the input's solid {|w| ≥ ½} (estimated at kFidelityVolumePoints of a
 //! Halton sequence over the input's bounding box) differ by more than
 //! `limits.distance` × the input's area plus four standard errors of the
@@ -25,24 +27,23 @@
 //! outward, voids inward), whose winding number tells one solid where shells
 //! wound every which way cancel (an inside-out box overlapping an outward
 //! one): it passes when that passes.
-//! A sample's distance is measured exactly only where a cheaper first look
-//! says it may be far: read from the level set the output was meshed from;
-//! or, for a mesh, 0 on a triangle the output kept from the input (the same
-//! corners as floats) and an upper bound from the triangles it did not.
-//! Costs a hash of both meshes' triangles (or a level-set lookup per
-//! sample), an AABB tree over the triangles the output did not keep, one over
-//! the whole output only when some sample may be far, a winding-number tree
-//! over the input only when some sample is far or for the volume, two winding
-//! numbers per far sample and kFidelityVolumePoints for the volume; queries
-//! in parallel. Reports progress; throws Error(CANCELLED).
+//! Distances are measured on the output's triangles, never read from the
+//! level set it was meshed from (shells dropped at extraction would not
+//! show): 0 on a triangle the output kept from the input (the same corners
+//! as floats), else the distance to the triangles it did not keep, and
+//! exactly on the whole output where that bound is far.
+//! Costs a hash of both meshes' triangles, an AABB tree over the triangles
+//! the output did not keep (all of a meshed level set), one over the whole
+//! output only when it kept some and a sample may be far, a winding-number
+//! tree over the input only when some sample is far or for the volume, two
+//! to four winding numbers per far sample and kFidelityVolumePoints for the
+//! volume; queries in parallel. Reports progress; throws Error(CANCELLED).
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <openvdb/openvdb.h>
 
 #include "core/mesh.h"
 #include "core/progress.h"
@@ -62,8 +63,11 @@ struct Fidelity {
     double max = 0.0;        //!< mm, over the samples on the solid's surface
     double mean = 0.0;       //!< mm, likewise
     double far_share = 0.0;  //!< of the samples on the solid's surface, the share farther than limits.distance
+    //! of the same, the share far on surface with no clear solid on either
+    //! side (sheets, loose flaps): what no voxel size brings back
+    double far_sheet_share = 0.0;
     size_t samples = 0;      //!< taken on the input's surface
-    size_t left_out = 0;     //!< far samples on surface that bounds no solid (inner faces, sheets) or exempt
+    size_t left_out = 0;     //!< far samples on inner faces, slit walls or in exempt balls
     double input_volume = 0.0;      //!< mm³, estimated (0 when not compared)
     double output_volume = 0.0;     //!< mm³, exact (0 when not compared)
     double volume_tolerance = 0.0;  //!< mm³
@@ -94,11 +98,8 @@ FidelityLimits voxel_limits(double voxel);
 
 //! `output`: a closed, outward-oriented mesh (the solid as written; for a
 //! hollowed part its outer shells). An empty input or output fails.
-//! `level_set`: the level set `output` was meshed from, if any: a sample's
-//! distance is then first read from it (trilinear), and measured on the
-//! mesh only where it says far.
 Fidelity measure_fidelity(const Mesh& input, const Mesh& output, const FidelityLimits& limits,
-                          Progress& progress, const openvdb::FloatGrid* level_set = nullptr);
+                          Progress& progress);
 
 //! Throws Error(INTERNAL), "NAME: the WHAT is not the input's model: DEFECT",
 //! when `fidelity` did not pass.

@@ -1,6 +1,7 @@
 // The fidelity gate, on shapes whose answer is known by construction: the
 // input itself passes with nothing far; a sliver of it, one of its two
-// shells, a copy moved by a wall's width or the input turned inside out fail,
+// shells, an open sheet beside it, a copy moved by a wall's width or the
+// input turned inside out fail,
 // each for the reason it should (the far share, or the volume: a soup wound
 // every which way has none to compare); the union of
 // overlapping shells, an inside-out copy and an open box against its closed
@@ -177,6 +178,24 @@ TEST(InputFidelity, ExemptBallsLeaveWhatTheyHoldOut) {
     l.exempt = {{{10, 10, 20}, 15.0}};
     const Fidelity whole = measure_fidelity(box, lowered, l, progress);
     EXPECT_TRUE(whole.passed) << whole.defect;
+}
+
+// A box and, beside it, an open 10 x 10 mm sheet: the sheet encloses no
+// volume on either side, yet it is the model's; an output of the box alone
+// leaves its 100 of the 700 mm² far, and says they are sheet.
+TEST(InputFidelity, AnOpenSheetTheOutputLacksCounts) {
+    Progress progress;
+    const Mesh box = test::make_box({0, 0, 0}, {10, 10, 10});
+    const Mesh sheet = test::loose_triangles({{Vec3{20, 0, 0}, Vec3{30, 0, 0}, Vec3{30, 10, 0}},
+                                              {Vec3{20, 0, 0}, Vec3{30, 10, 0}, Vec3{20, 10, 0}}});
+    FidelityLimits l = voxel_limits(0.2);
+    l.volume = false;
+    const Fidelity f = measure_fidelity(test::merged(box, sheet), box, l, progress);
+    EXPECT_FALSE(f.passed);
+    EXPECT_NEAR(f.far_share, 1.0 / 7.0, 0.02);
+    EXPECT_NEAR(f.far_sheet_share, 1.0 / 7.0, 0.02);
+    EXPECT_EQ(f.left_out, 0u);
+    EXPECT_NE(f.defect.find("no clear solid on either side"), std::string::npos) << f.defect;
 }
 
 TEST(InputFidelity, AnEmptyOutputFails) {

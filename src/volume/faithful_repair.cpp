@@ -1,0 +1,60 @@
+//! The repair held to the fidelity gate, refined where it lost the model
+//! (see faithful_repair.h).
+#include "volume/faithful_repair.h"
+
+#include <chrono>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace fabvdb::volume {
+
+namespace {
+
+std::string millimetres(double x) {
+    std::ostringstream text;
+    text.precision(3);
+    text << x << " mm";
+    return text.str();
+}
+
+}  // namespace
+
+FaithfulRepair faithful_repair(const Mesh& input, const Mesh& source, RepairOptions options, int refinements,
+                               const CentredFrame* frame, Progress& progress) {
+    FaithfulRepair result;
+    for (int attempt = 0;; ++attempt) {
+        const double voxel = options.distance.voxel_size;
+        RepairResult repaired;
+        try {
+            repaired = frame ? repair_in_frame(source, options, *frame, progress) : repair(source, options, progress);
+        } catch (const Error& e) {
+            // A finer voxel than the budget holds: the coarser attempt stands.
+            if (attempt == 0 || e.status() != FABVDB_ERR_OUT_OF_BUDGET) throw;
+            result.fidelity.defect += "; at voxel " + millimetres(voxel) + " it would exceed the memory budget";
+            return result;
+        }
+        if (attempt > 0)
+            result.warnings.push_back(options.distance.input_name + ": at voxel " + millimetres(result.voxels.back()) +
+                                      " the repaired surface was not the input's model (" + result.fidelity.defect +
+                                      "), so it was repaired again at " + millimetres(voxel));
+        // A sheet thickened on purpose lies half its thickness off the
+        // input, and encloses a volume the input does not.
+        result.limits = voxel_limits(voxel);
+        result.limits.distance += 0.5 * options.distance.thicken;
+        result.limits.volume = options.distance.thicken == 0.0;
+        const auto start = std::chrono::steady_clock::now();
+        result.fidelity = measure_fidelity(input, repaired.mesh, result.limits, progress);
+        result.fidelity_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        result.repaired = std::move(repaired);
+        result.voxels.push_back(voxel);
+        // Far sheets enclose nothing at any voxel: refining cannot bring
+        // enough of the surface back when they alone fail the gate.
+        if (result.fidelity.passed || attempt == refinements ||
+            result.fidelity.far_sheet_share > result.limits.far_share)
+            return result;
+        options.distance.voxel_size = 0.5 * voxel;
+    }
+}
+
+}  // namespace fabvdb::volume
