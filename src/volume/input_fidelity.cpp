@@ -4,6 +4,7 @@
 #include "volume/input_fidelity.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -14,9 +15,11 @@
 #include <vector>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "core/error.h"
 #include "core/vec3_ops.h"
+#include "volume/closest_point_on_triangle.h"
 #include "volume/orient_soup.h"
 #include "volume/surface_distance.h"
 #include "volume/winding_number.h"
@@ -79,16 +82,41 @@ uint64_t corner_hash(const Mesh& mesh, const Triangle& t) {
     return sum;
 }
 
-std::vector<uint64_t> sorted_hashes(const Mesh& mesh) {
-    std::vector<uint64_t> hashes;
-    hashes.reserve(mesh.triangles.size());
-    for (const Triangle& t : mesh.triangles) hashes.push_back(corner_hash(mesh, t));
-    std::sort(hashes.begin(), hashes.end());
-    return hashes;
-}
+//! Which of the input's triangles the output kept (the same corners as
+//! floats), and the output's triangles it did not keep (indices).
+struct KeptTriangles {
+    std::vector<char> input_kept;
+    std::vector<uint32_t> output_added;
+};
 
-bool holds(const std::vector<uint64_t>& sorted, uint64_t hash) {
-    return std::binary_search(sorted.begin(), sorted.end(), hash);
+KeptTriangles kept_triangles(const Mesh& input, const Mesh& output) {
+    std::vector<std::pair<uint64_t, uint32_t>> input_hashes(input.triangles.size());
+    tbb::parallel_for(size_t(0), input.triangles.size(),
+                      [&](size_t t) { input_hashes[t] = {corner_hash(input, input.triangles[t]), uint32_t(t)}; });
+    tbb::parallel_sort(input_hashes.begin(), input_hashes.end());
+    // Per output triangle, where its hash starts among the input's (or none).
+    constexpr size_t none = std::numeric_limits<size_t>::max();
+    std::vector<size_t> match(output.triangles.size(), none);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, output.triangles.size(), 4096),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t t = r.begin(); t != r.end(); ++t) {
+                              const uint64_t h = corner_hash(output, output.triangles[t]);
+                              const auto at = std::lower_bound(input_hashes.begin(), input_hashes.end(),
+                                                               std::pair<uint64_t, uint32_t>{h, 0});
+                              if (at != input_hashes.end() && at->first == h) match[t] = size_t(at - input_hashes.begin());
+                          }
+                      });
+    KeptTriangles kept;
+    kept.input_kept.assign(input.triangles.size(), 0);
+    for (uint32_t t = 0; t < output.triangles.size(); ++t) {
+        if (match[t] == none) {
+            kept.output_added.push_back(t);
+            continue;
+        }
+        for (size_t k = match[t]; k < input_hashes.size() && input_hashes[k].first == input_hashes[match[t]].first; ++k)
+            kept.input_kept[input_hashes[k].second] = 1;
+    }
+    return kept;
 }
 
 //! The radical inverse of i in `base`: the Halton sequence's coordinate.
@@ -104,6 +132,98 @@ std::string figure(double x) {
     text << x;
     return text.str();
 }
+
+//! Triangles of a mesh bucketed by the cell of their centroid, cells as wide
+//! as `reach` plus the farthest any corner lies from its centroid: every
+//! triangle with a point within `reach` of p has its centroid in the 27
+//! cells around p's. Costs a sort of the triangles by cell.
+class NearbyTriangles {
+public:
+    NearbyTriangles(const Mesh& mesh, std::vector<uint32_t> triangles, double reach) : mesh_(mesh), reach_(reach) {
+        std::vector<Vec3> centroids(triangles.size());
+        std::vector<double> spreads(triangles.size());
+        tbb::parallel_for(size_t(0), triangles.size(), [&](size_t k) {
+            const Triangle& t = mesh.triangles[triangles[k]];
+            centroids[k] = (1.0 / 3.0) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
+            for (uint32_t v : t) spreads[k] = std::max(spreads[k], squared_distance(centroids[k], mesh.vertices[v]));
+        });
+        lo_ = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+               std::numeric_limits<double>::infinity()};
+        double spread = 0.0;
+        for (size_t k = 0; k < triangles.size(); ++k) {
+            spread = std::max(spread, spreads[k]);
+            for (int a = 0; a < 3; ++a) lo_[a] = std::min(lo_[a], centroids[k][a]);
+        }
+        spread_ = std::sqrt(spread);
+        cell_ = reach + spread_;
+        cells_.resize(triangles.size());
+        tbb::parallel_for(size_t(0), triangles.size(),
+                          [&](size_t k) { cells_[k] = {key(cell_of(centroids[k])), triangles[k]}; });
+        tbb::parallel_sort(cells_.begin(), cells_.end());
+    }
+
+    //! The distance from p to the nearest of the triangles when it is at
+    //! most `reach`, else infinity. Its own cell first; a neighbour only
+    //! when its triangles, none farther than the spread from a centroid in
+    //! it, may come nearer than the best so far.
+    double distance_within(const Vec3& p) const {
+        double best = std::numeric_limits<double>::infinity();
+        if (cells_.empty()) return best;
+        const std::array<int64_t, 3> centre = cell_of(p);
+        const openvdb::Vec3d q(p[0], p[1], p[2]);
+        for (int ring = 0; ring <= 1; ++ring)
+            for (int64_t dx = -ring; dx <= ring; ++dx)
+                for (int64_t dy = -ring; dy <= ring; ++dy)
+                    for (int64_t dz = -ring; dz <= ring; ++dz) {
+                        if (ring == 1 && dx == 0 && dy == 0 && dz == 0) continue;
+                        const std::array<int64_t, 3> cell{centre[0] + dx, centre[1] + dy, centre[2] + dz};
+                        if (cell[0] < 0 || cell[1] < 0 || cell[2] < 0) continue;
+                        if (ring == 1 && box_distance(p, cell) - spread_ >= std::min(best, reach_)) continue;
+                        const uint64_t k = key(cell);
+                        auto at = std::lower_bound(cells_.begin(), cells_.end(), std::pair<uint64_t, uint32_t>{k, 0});
+                        for (; at != cells_.end() && at->first == k; ++at) {
+                            const Triangle& t = mesh_.triangles[at->second];
+                            const Vec3 &a = mesh_.vertices[t[0]], &b = mesh_.vertices[t[1]], &c = mesh_.vertices[t[2]];
+                            const openvdb::Vec3d on =
+                                closest_point_on_triangle(q, {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, {c[0], c[1], c[2]})
+                                    .point;
+                            best = std::min(best, (q - on).length());
+                        }
+                    }
+        return best <= reach_ ? best : std::numeric_limits<double>::infinity();
+    }
+
+private:
+    std::array<int64_t, 3> cell_of(const Vec3& p) const {
+        std::array<int64_t, 3> cell;
+        for (int a = 0; a < 3; ++a) cell[a] = int64_t(std::floor((p[a] - lo_[a]) / cell_)) + 1;
+        return cell;
+    }
+    //! 21 bits an axis: the cells are at least reach wide, and reach is at
+    //! least 1e-4 of the diagonal, so an axis spans about 1e4 of them at
+    //! most; a key that wraps only adds candidates.
+    //! From p to the box of a cell (0 inside it).
+    double box_distance(const Vec3& p, const std::array<int64_t, 3>& cell) const {
+        double squared = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            const double lo = lo_[a] + double(cell[a] - 1) * cell_, hi = lo + cell_;
+            const double out = std::max({lo - p[a], 0.0, p[a] - hi});
+            squared += out * out;
+        }
+        return std::sqrt(squared);
+    }
+    static uint64_t key(const std::array<int64_t, 3>& cell) {
+        const uint64_t mask = (uint64_t(1) << 21) - 1;
+        return (uint64_t(cell[0]) & mask) << 42 | (uint64_t(cell[1]) & mask) << 21 | (uint64_t(cell[2]) & mask);
+    }
+
+    const Mesh& mesh_;
+    double reach_;
+    double spread_ = 0.0;  // the farthest a corner lies from its triangle's centroid
+    double cell_ = 1.0;
+    Vec3 lo_{0, 0, 0};
+    std::vector<std::pair<uint64_t, uint32_t>> cells_;  // (cell key, triangle), sorted
+};
 
 }  // namespace
 
@@ -167,28 +287,16 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
 
     // A first distance per sample, at no more cost than the output needs: 0
     // on a triangle it kept from the input, else the distance to the
-    // triangles it did not keep (exact when it kept none, an upper bound
-    // otherwise). Samples that stay farther than the limit are measured
-    // exactly on the whole output.
+    // triangles it did not keep when that is within the limit (an upper
+    // bound, exact when it kept none). Samples beyond it are measured
+    // exactly on the whole output where they count.
     std::vector<double> distance(samples.size(), 0.0);
-    const std::vector<uint64_t> input_hashes = sorted_hashes(input);
-    const std::vector<uint64_t> output_hashes = sorted_hashes(output);
-    Mesh added{output.vertices, {}};
-    for (const Triangle& t : output.triangles)
-        if (!holds(input_hashes, corner_hash(output, t))) added.triangles.push_back(t);
-    const bool first_look_exact = added.triangles.size() == output.triangles.size();
-    if (!added.triangles.empty()) {
-        const SurfaceDistance to_added(added);
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, samples.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i != r.end(); ++i)
-                if (!holds(output_hashes, corner_hash(input, input.triangles[samples[i].triangle])))
-                    distance[i] = to_added.nearest(samples[i].point).distance;
-        });
-    } else {
-        for (size_t i = 0; i < samples.size(); ++i)
-            if (!holds(output_hashes, corner_hash(input, input.triangles[samples[i].triangle])))
-                distance[i] = std::numeric_limits<double>::infinity();
-    }
+    KeptTriangles kept = kept_triangles(input, output);
+    const NearbyTriangles nearby(output, std::move(kept.output_added), limits.distance);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, samples.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i != r.end(); ++i)
+            if (!kept.input_kept[samples[i].triangle]) distance[i] = nearby.distance_within(samples[i].point);
+    });
     progress.check();
     progress.update(0.2);
 
@@ -244,7 +352,7 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
                      unsure.end());
     }
     progress.update(0.5);
-    if (!unsure.empty() && !first_look_exact) {
+    if (!unsure.empty()) {
         const SurfaceDistance surface(output);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, unsure.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
             if (progress.cancelled()) return;

@@ -30,14 +30,16 @@
 //! Distances are measured on the output's triangles, never read from the
 //! level set it was meshed from (shells dropped at extraction would not
 //! show): 0 on a triangle the output kept from the input (the same corners
-//! as floats), else the distance to the triangles it did not keep, and
-//! exactly on the whole output where that bound is far.
-//! Costs a hash of both meshes' triangles, an AABB tree over the triangles
-//! the output did not keep (all of a meshed level set), one over the whole
-//! output only when it kept some and a sample may be far, a winding-number
-//! tree over the input only when some sample is far or for the volume, two
-//! to four winding numbers per far sample and kFidelityVolumePoints for the
-//! volume; queries in parallel. Reports progress; throws Error(CANCELLED).
+//! as floats), else the distance to the nearest of the triangles it did not
+//! keep when that is within `limits.distance` (found in a grid of cells of
+//! about that width), and exactly on the whole output for the far samples
+//! that count.
+//! Costs a hash of both meshes' triangles, a sort of the triangles the
+//! output did not keep by cell, an AABB tree over the whole output only
+//! when some sample that counts is far, a winding-number tree over the
+//! input only when some sample is far or for the volume, two to four
+//! winding numbers per far sample and kFidelityVolumePoints for the volume;
+//! queries in parallel. Reports progress; throws Error(CANCELLED).
 #pragma once
 
 #include <cstddef>
