@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/figure_text.h"
 #include "surface/degenerate_triangles.h"
 #include "surface/duplicate_triangles.h"
 #include "surface/mesh_topology.h"
@@ -21,12 +21,7 @@ namespace fabvdb::surface {
 
 namespace {
 
-std::string millimetres(double value) {
-    std::ostringstream text;
-    text.precision(3);
-    text << value << " mm";
-    return text.str();
-}
+std::string millimetres(double value) { return figure_text(value) + " mm"; }
 
 // What the size and place of the model suggest about its units: a part under
 // 1 mm or over 2 m across was most likely drawn in other units (metres,

@@ -3,20 +3,15 @@
 #include "volume/faithful_repair.h"
 
 #include <chrono>
-#include <sstream>
 
 #include "core/error.h"
+#include "core/figure_text.h"
 
 namespace fabvdb::volume {
 
 namespace {
 
-std::string millimetres(double x) {
-    std::ostringstream text;
-    text.precision(3);
-    text << x << " mm";
-    return text.str();
-}
+std::string millimetres(double x) { return figure_text(x) + " mm"; }
 
 }  // namespace
 

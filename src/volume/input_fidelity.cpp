@@ -18,6 +18,7 @@
 #include <tbb/parallel_sort.h>
 
 #include "core/error.h"
+#include "core/figure_text.h"
 #include "core/vec3_ops.h"
 #include "volume/closest_point_on_triangle.h"
 #include "volume/orient_soup.h"
@@ -124,13 +125,6 @@ double radical_inverse(size_t i, unsigned base) {
     double inverse = 0.0, digit = 1.0 / base;
     for (; i > 0; i /= base, digit /= base) inverse += double(i % base) * digit;
     return inverse;
-}
-
-std::string figure(double x) {
-    std::ostringstream text;
-    text.precision(3);
-    text << x;
-    return text.str();
 }
 
 //! Triangles of a mesh bucketed by the cell of their centroid, cells as wide
@@ -380,10 +374,10 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
     result.far_sheet_share = counted ? double(far_sheet) / double(counted) : 0.0;
     std::ostringstream defect;
     if (result.far_share > limits.far_share) {
-        defect << figure(100.0 * result.far_share) << "% of the input's surface lies farther than "
-               << figure(limits.distance) << " mm from it (at most " << figure(result.max) << " mm)";
+        defect << figure_text(100.0 * result.far_share) << "% of the input's surface lies farther than "
+               << figure_text(limits.distance) << " mm from it (at most " << figure_text(result.max) << " mm)";
         if (far_sheet > 0)
-            defect << ", " << figure(100.0 * result.far_sheet_share)
+            defect << ", " << figure_text(100.0 * result.far_sheet_share)
                    << "% on surface with no clear solid on either side (an open sheet, a loose flap)";
     }
 
@@ -422,8 +416,8 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
         if (result.volume_compared &&
             std::abs(result.output_volume - result.input_volume) > result.volume_tolerance) {
             if (defect.tellp() > 0) defect << "; ";
-            defect << "it encloses " << figure(result.output_volume) << " mm³ where the input encloses about "
-                   << figure(result.input_volume) << " mm³";
+            defect << "it encloses " << figure_text(result.output_volume) << " mm³ where the input encloses about "
+                   << figure_text(result.input_volume) << " mm³";
         }
     }
     result.defect = defect.str();
