@@ -124,6 +124,42 @@ bool is_hollow_shell(const Mesh& mesh, Progress& progress) {
 
 namespace {
 
+//! Halvings of the voxel the drilled part is meshed at, where at its own
+//! it was not the input's model (folds narrower than two voxels closed).
+constexpr int kSurfaceRefinements = 2;
+
+//! The drilled part against the input (volume/input_fidelity.h), but for
+//! what the drills took and the cavities filled (the input's own voids
+//! among them); its volume is the material's, not the solid's.
+void measure_drained(const Mesh& input, DrainPartResult& result, StageClock& clock, Progress& progress) {
+    result.fidelity_limits = volume::voxel_limits(result.voxel_size);
+    result.fidelity_limits.volume = false;
+    result.fidelity_limits.exempt = result.filled_cavities;
+    // Each drilled cylinder (from half a diameter behind the centre to its
+    // depth, as drilled), covered by balls of the hole's diameter every radius.
+    for (const DrainHole& hole : result.plan.holes) {
+        const double radius = 0.5 * hole.diameter, length = radius + hole.depth;
+        const Vec3 start = hole.center - radius * hole.axis;
+        for (double along = 0.0;; along = std::min(along + radius, length)) {
+            result.fidelity_limits.exempt.push_back({start + along * hole.axis, hole.diameter});
+            if (along >= length) break;
+        }
+    }
+    result.fidelity = volume::measure_fidelity(input, result.drilled, result.fidelity_limits, progress);
+    clock.lap("fidelity");
+}
+
+//! The part's level set less the cavity's, at `voxel`: the part from its
+//! outer shells, the cavity resampled from the planning grid.
+openvdb::FloatGrid::Ptr shell_at(const Mesh& outer, const openvdb::FloatGrid& cavity, double voxel) {
+    const openvdb::FloatGrid::Ptr part = level_set_of(outer, voxel);
+    const openvdb::FloatGrid::Ptr resampled = openvdb::FloatGrid::create(part->background());
+    resampled->setTransform(part->transform().copy());
+    resampled->setGridClass(openvdb::GRID_LEVEL_SET);
+    openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(cavity, *resampled);
+    return openvdb::tools::csgDifferenceCopy(*part, *resampled);
+}
+
 DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions& options, Progress& progress) {
     if (!(options.wall > 0.0) || !std::isfinite(options.wall))
         throw Error(FABVDB_ERR_INVALID_ARGUMENT, "the wall must be > 0 mm");
@@ -160,6 +196,7 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
         if (hollowed.outer_surface_voxel > 0.0) surface_voxel = std::min(voxel, hollowed.outer_surface_voxel);
         clock.lap("hollow");
     }
+    result.surface_voxel = surface_voxel;
     progress.stage("level sets");
     const Shells shells = split_shells(shells_mesh);
     if (shells.voids.triangles.empty()) {
@@ -167,6 +204,7 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
                                   ": the part has no cavity, so no powder is trapped: no drain holes are needed and "
                                   "the part is returned solid, undrilled");
         result.drilled = std::move(shells_mesh);
+        measure_drained(input, result, clock, progress);
         return result;
     }
     openvdb::FloatGrid::Ptr cavity = level_set_of(shells.voids, voxel);
@@ -175,6 +213,7 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
                                   ": the part's voids are thinner than a voxel, so no powder is trapped: no drain "
                                   "holes are needed and the part is returned undrilled");
         result.drilled = std::move(shells_mesh);
+        measure_drained(input, result, clock, progress);
         return result;
     }
     const openvdb::FloatGrid::Ptr part = level_set_of(shells.outer, voxel);
@@ -208,6 +247,7 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
         result.shell.reset();
         result.plan = DrainPlan{};
         result.drilled = shells.outer;
+        measure_drained(input, result, clock, progress);
         return result;
     }
     result.has_cavity = true;
@@ -224,50 +264,39 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
         cylinders.push_back(cylinder);
     }
     // Planned at the hollowing's voxel; drilled into the part and the final
-    // cavity taken to the outer surface's voxel when that is finer.
-    openvdb::FloatGrid::ConstPtr shell = result.shell;
-    if (surface_voxel < voxel) {
-        const openvdb::FloatGrid::Ptr fine_part = level_set_of(shells.outer, surface_voxel);
-        const openvdb::FloatGrid::Ptr fine_cavity = openvdb::FloatGrid::create(fine_part->background());
-        fine_cavity->setTransform(fine_part->transform().copy());
-        fine_cavity->setGridClass(openvdb::GRID_LEVEL_SET);
-        openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(*cavity, *fine_cavity);
-        shell = openvdb::tools::csgDifferenceCopy(*fine_part, *fine_cavity);
-        progress.check();
-        clock.lap("level sets at the surface's voxel");
+    // cavity taken to the outer surface's voxel when that is finer, and
+    // finer again where the drilled part was not the input's model.
+    for (int refinement = 0;; ++refinement) {
+        openvdb::FloatGrid::ConstPtr shell = result.shell;
+        if (surface_voxel < voxel) {
+            shell = shell_at(shells.outer, *cavity, surface_voxel);
+            progress.check();
+            clock.lap("level sets at the surface's voxel");
+        }
+        result.surface_voxel = surface_voxel;
+        const openvdb::FloatGrid::Ptr drilled = volume::drill_holes(*shell, cylinders, progress);
+        clock.lap("drill");
+        result.drilled = volume::extract_mesh(*drilled, 0.0, progress);
+        clock.lap("extract");
+        measure_drained(input, result, clock, progress);
+        if (result.fidelity.passed || refinement == kSurfaceRefinements ||
+            result.fidelity.far_sheet_share > result.fidelity_limits.far_share)
+            return result;
+        std::ostringstream message;
+        message.precision(3);
+        message << options.input_name << ": at voxel " << surface_voxel
+                << " mm the drilled part was not the input's model (" << result.fidelity.defect
+                << "), so it was meshed again at " << 0.5 * surface_voxel << " mm";
+        result.warnings.push_back(message.str());
+        surface_voxel *= 0.5;
     }
-    result.surface_voxel = surface_voxel;
-    const openvdb::FloatGrid::Ptr drilled = volume::drill_holes(*shell, cylinders, progress);
-    clock.lap("drill");
-    result.drilled = volume::extract_mesh(*drilled, 0.0, progress);
-    clock.lap("extract");
-    return result;
 }
 
 }  // namespace
 
 DrainPartResult drain_part(const Mesh& input, const DrainPartOptions& options, Progress& progress) {
     DrainPartResult result = hollow_plan_and_drill(input, options, progress);
-    // The drilled part must still be the input's model, but for what the
-    // drills took and the cavities filled (the input's own voids among
-    // them); its volume is the material's, not the solid's.
-    StageClock clock(result.timings);
-    result.fidelity_limits = volume::voxel_limits(result.voxel_size);
-    result.fidelity_limits.volume = false;
-    result.fidelity_limits.exempt = result.filled_cavities;
-    // Each drilled cylinder (from half a diameter behind the centre to its
-    // depth, as drilled), covered by balls of the hole's diameter every radius.
-    for (const DrainHole& hole : result.plan.holes) {
-        const double radius = 0.5 * hole.diameter, length = radius + hole.depth;
-        const Vec3 start = hole.center - radius * hole.axis;
-        for (double along = 0.0;; along = std::min(along + radius, length)) {
-            result.fidelity_limits.exempt.push_back({start + along * hole.axis, hole.diameter});
-            if (along >= length) break;
-        }
-    }
-    result.fidelity = volume::measure_fidelity(input, result.drilled, result.fidelity_limits, progress);
     volume::require_faithful(result.fidelity, options.input_name, "drained part");
-    clock.lap("fidelity");
     return result;
 }
 

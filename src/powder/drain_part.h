@@ -41,7 +41,9 @@ struct DrainPartResult {
     bool input_was_hollow = false;
     double voxel_size = 0.0;
     //! mm, the voxel the drilled part was meshed at: voxel_size, or the
-    //! outer surface's where hollowing refined it to keep thin features.
+    //! outer surface's where hollowing refined it to keep thin features,
+    //! or up to two halvings of that where the drilled part was not the
+    //! input's model at it (folds narrower than two voxels closed).
     double surface_voxel = 0.0;
     openvdb::FloatGrid::Ptr shell;  //!< undrilled, negative in the wall
     DrainPlan plan;
