@@ -12,6 +12,7 @@
 #include "core/colour_bar.h"
 #include "core/mesh.h"
 #include "core/stage_clock.h"
+#include "core/turned_inside_out.h"
 #include "powder/cleaning_routine.h"
 #include "powder/drain_part.h"
 #include "powder/heatmap_ply.h"
@@ -226,9 +227,7 @@ namespace {
 
 std::unique_ptr<fabvdb_heatmap> new_heatmap_handle(const fabvdb::powder::DrainPlan& plan, HeatMaps maps) {
     auto handle = std::make_unique<fabvdb_heatmap>();
-    fabvdb::Mesh surface = plan.cavity_surface;
-    for (fabvdb::Triangle& t : surface.triangles) std::swap(t[1], t[2]);
-    handle->surface.reset(fabvdb::api::new_mesh_handle(std::move(surface)));
+    handle->surface.reset(fabvdb::api::new_mesh_handle(fabvdb::turned_inside_out(plan.cavity_surface)));
     const double top[2] = {1.0, maps.left_top};
     handle->values[FABVDB_HEATMAP_DRAINED] = std::move(maps.share);
     handle->values[FABVDB_HEATMAP_LEFT] = std::move(maps.left);

@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "core/turned_inside_out.h"
 #include "surface/collapse_degenerate_triangles.h"
 #include "surface/fill_small_holes.h"
 #include "volume/clean_solid.h"
@@ -33,10 +34,7 @@ std::optional<Mesh> clean_or_resolved(const Mesh& mesh, std::vector<std::string>
 }
 
 bool is_clean_either_way(const Mesh& mesh, Progress& progress) {
-    if (volume::check_solid(mesh, progress).clean) return true;
-    Mesh flipped = mesh;
-    for (Triangle& t : flipped.triangles) std::swap(t[1], t[2]);
-    return volume::check_solid(flipped, progress).clean;
+    return volume::check_solid(mesh, progress).clean || volume::check_solid(turned_inside_out(mesh), progress).clean;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/float_coordinates.h"
 #include "core/stage_clock.h"
+#include "core/turned_inside_out.h"
 #include "volume/cavity_regions.h"
 #include "volume/clean_solid.h"
 #include "volume/extract_mesh.h"
@@ -119,11 +120,6 @@ void check_budget(const Mesh& outer, const HollowOptions& o, double voxel) {
 bool clean_in_floats(Mesh mesh, const CentredFrame& frame, Progress& progress) {
     for (Vec3& p : mesh.vertices) p = stored_position(p, frame);
     return check_solid(mesh, progress).clean;
-}
-
-Mesh flipped(Mesh mesh) {
-    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
-    return mesh;
 }
 
 //! The outer surface: the input itself when it is clean, its shells' union
@@ -327,7 +323,7 @@ HollowResult hollow_in_frame(const Mesh& input, const HollowOptions& options, co
     clock.lap("separation check");
 
     result.mesh = std::move(outer);
-    append(result.mesh, flipped(std::move(kept)));
+    append(result.mesh, turned_inside_out(std::move(kept)));
     result.volume_shell = result.volume_solid;
     for (double v : result.cavity_volumes) result.volume_shell -= v;
     return result;

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <utility>
 
+#include "core/turned_inside_out.h"
 #include "volume/clean_solid.h"
 #include "volume/cut_along_crossings.h"
 #include "volume/cut_patches.h"
@@ -29,11 +30,7 @@ std::optional<Mesh> resolve_crossings(const Mesh& mesh, const std::vector<std::p
     // A surface stored inside out (a negative volume) bounds {w <= -1}: its
     // triangles turned round bound {w >= 1}, the same solid facing outward.
     // The crossing pairs name the same triangles either way.
-    if (signed_volume(mesh) < 0.0) {
-        Mesh turned = mesh;
-        for (Triangle& t : turned.triangles) std::swap(t[1], t[2]);
-        return resolve_crossings(turned, crossings, progress);
-    }
+    if (signed_volume(mesh) < 0.0) return resolve_crossings(turned_inside_out(mesh), crossings, progress);
     const std::optional<CutSurface> surface = cut_along_crossings(mesh, crossings);
     if (!surface) return std::nullopt;
     progress.update(0.2);
