@@ -127,32 +127,49 @@ double radical_inverse(size_t i, unsigned base) {
     return inverse;
 }
 
-//! Triangles of a mesh bucketed by the cell of their centroid, cells as wide
-//! as `reach` plus the farthest any corner lies from its centroid: every
-//! triangle with a point within `reach` of p has its centroid in the 27
-//! cells around p's. Costs a sort of the triangles by cell.
+//! Triangles of a mesh, for the distance to the nearest of them within
+//! `reach`. Those no wider than twice `reach` (a level set's, a voxel
+//! across) are bucketed by the cell of their centroid, cells as wide as
+//! `reach` plus the farthest any of their corners lies from its centroid:
+//! every such triangle with a point within `reach` of p has its centroid in
+//! the 27 cells around p's. Wider ones (a mesh's own, cut or kept) go to an
+//! AABB tree. Costs a sort of the narrow triangles by cell, a tree of the
+//! wide ones.
 class NearbyTriangles {
 public:
-    NearbyTriangles(const Mesh& mesh, std::vector<uint32_t> triangles, double reach) : mesh_(mesh), reach_(reach) {
+    NearbyTriangles(const Mesh& mesh, const std::vector<uint32_t>& triangles, double reach)
+        : mesh_(mesh), reach_(reach) {
         std::vector<Vec3> centroids(triangles.size());
         std::vector<double> spreads(triangles.size());
         tbb::parallel_for(size_t(0), triangles.size(), [&](size_t k) {
             const Triangle& t = mesh.triangles[triangles[k]];
             centroids[k] = (1.0 / 3.0) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
-            for (uint32_t v : t) spreads[k] = std::max(spreads[k], squared_distance(centroids[k], mesh.vertices[v]));
+            double spread = 0.0;
+            for (uint32_t v : t) spread = std::max(spread, squared_distance(centroids[k], mesh.vertices[v]));
+            spreads[k] = std::sqrt(spread);
         });
         lo_ = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                std::numeric_limits<double>::infinity()};
-        double spread = 0.0;
+        std::vector<size_t> narrow;
+        Mesh wide{{}, {}};
         for (size_t k = 0; k < triangles.size(); ++k) {
-            spread = std::max(spread, spreads[k]);
+            if (spreads[k] > 2.0 * reach) {
+                wide.triangles.push_back(mesh.triangles[triangles[k]]);
+                continue;
+            }
+            narrow.push_back(k);
+            spread_ = std::max(spread_, spreads[k]);
             for (int a = 0; a < 3; ++a) lo_[a] = std::min(lo_[a], centroids[k][a]);
         }
-        spread_ = std::sqrt(spread);
+        if (!wide.triangles.empty()) {
+            wide.vertices = mesh.vertices;
+            wide_ = std::make_unique<SurfaceDistance>(wide);
+        }
         cell_ = reach + spread_;
-        cells_.resize(triangles.size());
-        tbb::parallel_for(size_t(0), triangles.size(),
-                          [&](size_t k) { cells_[k] = {key(cell_of(centroids[k])), triangles[k]}; });
+        cells_.resize(narrow.size());
+        tbb::parallel_for(size_t(0), narrow.size(), [&](size_t j) {
+            cells_[j] = {key(cell_of(centroids[narrow[j]])), triangles[narrow[j]]};
+        });
         tbb::parallel_sort(cells_.begin(), cells_.end());
     }
 
@@ -161,33 +178,38 @@ public:
     //! when its triangles, none farther than the spread from a centroid in
     //! it, may come nearer than the best so far.
     double distance_within(const Vec3& p) const {
-        double best = std::numeric_limits<double>::infinity();
-        if (cells_.empty()) return best;
-        const std::array<int64_t, 3> centre = cell_of(p);
-        const openvdb::Vec3d q(p[0], p[1], p[2]);
-        for (int ring = 0; ring <= 1; ++ring)
-            for (int64_t dx = -ring; dx <= ring; ++dx)
-                for (int64_t dy = -ring; dy <= ring; ++dy)
-                    for (int64_t dz = -ring; dz <= ring; ++dz) {
-                        if (ring == 1 && dx == 0 && dy == 0 && dz == 0) continue;
-                        const std::array<int64_t, 3> cell{centre[0] + dx, centre[1] + dy, centre[2] + dz};
-                        if (cell[0] < 0 || cell[1] < 0 || cell[2] < 0) continue;
-                        if (ring == 1 && box_distance(p, cell) - spread_ >= std::min(best, reach_)) continue;
-                        const uint64_t k = key(cell);
-                        auto at = std::lower_bound(cells_.begin(), cells_.end(), std::pair<uint64_t, uint32_t>{k, 0});
-                        for (; at != cells_.end() && at->first == k; ++at) {
-                            const Triangle& t = mesh_.triangles[at->second];
-                            const Vec3 &a = mesh_.vertices[t[0]], &b = mesh_.vertices[t[1]], &c = mesh_.vertices[t[2]];
-                            const openvdb::Vec3d on =
-                                closest_point_on_triangle(q, {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, {c[0], c[1], c[2]})
-                                    .point;
-                            best = std::min(best, (q - on).length());
+        double best = wide_ ? wide_->nearest(p).distance : std::numeric_limits<double>::infinity();
+        if (!cells_.empty()) {
+            const std::array<int64_t, 3> centre = cell_of(p);
+            const openvdb::Vec3d q(p[0], p[1], p[2]);
+            for (int ring = 0; ring <= 1; ++ring)
+                for (int64_t dx = -ring; dx <= ring; ++dx)
+                    for (int64_t dy = -ring; dy <= ring; ++dy)
+                        for (int64_t dz = -ring; dz <= ring; ++dz) {
+                            if (ring == 1 && dx == 0 && dy == 0 && dz == 0) continue;
+                            const std::array<int64_t, 3> cell{centre[0] + dx, centre[1] + dy, centre[2] + dz};
+                            if (cell[0] < 0 || cell[1] < 0 || cell[2] < 0) continue;
+                            if (ring == 1 && box_distance(p, cell) - spread_ >= std::min(best, reach_)) continue;
+                            best = std::min(best, nearest_in(cell, q));
                         }
-                    }
+        }
         return best <= reach_ ? best : std::numeric_limits<double>::infinity();
     }
 
 private:
+    double nearest_in(const std::array<int64_t, 3>& cell, const openvdb::Vec3d& q) const {
+        double best = std::numeric_limits<double>::infinity();
+        const uint64_t k = key(cell);
+        for (auto at = std::lower_bound(cells_.begin(), cells_.end(), std::pair<uint64_t, uint32_t>{k, 0});
+             at != cells_.end() && at->first == k; ++at) {
+            const Triangle& t = mesh_.triangles[at->second];
+            const Vec3 &a = mesh_.vertices[t[0]], &b = mesh_.vertices[t[1]], &c = mesh_.vertices[t[2]];
+            const openvdb::Vec3d on =
+                closest_point_on_triangle(q, {a[0], a[1], a[2]}, {b[0], b[1], b[2]}, {c[0], c[1], c[2]}).point;
+            best = std::min(best, (q - on).length());
+        }
+        return best;
+    }
     std::array<int64_t, 3> cell_of(const Vec3& p) const {
         std::array<int64_t, 3> cell;
         for (int a = 0; a < 3; ++a) cell[a] = int64_t(std::floor((p[a] - lo_[a]) / cell_)) + 1;
@@ -213,10 +235,11 @@ private:
 
     const Mesh& mesh_;
     double reach_;
-    double spread_ = 0.0;  // the farthest a corner lies from its triangle's centroid
+    double spread_ = 0.0;  // the farthest a corner of a narrow triangle lies from its centroid
     double cell_ = 1.0;
     Vec3 lo_{0, 0, 0};
-    std::vector<std::pair<uint64_t, uint32_t>> cells_;  // (cell key, triangle), sorted
+    std::vector<std::pair<uint64_t, uint32_t>> cells_;  // (cell key, narrow triangle), sorted
+    std::unique_ptr<SurfaceDistance> wide_;              // the wide triangles, if any
 };
 
 }  // namespace
@@ -286,7 +309,7 @@ Fidelity measure_against(const Mesh& input, const Mesh& output, const FidelityLi
     // exactly on the whole output where they count.
     std::vector<double> distance(samples.size(), 0.0);
     KeptTriangles kept = kept_triangles(input, output);
-    const NearbyTriangles nearby(output, std::move(kept.output_added), limits.distance);
+    const NearbyTriangles nearby(output, kept.output_added, limits.distance);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, samples.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t i = r.begin(); i != r.end(); ++i)
             if (!kept.input_kept[samples[i].triangle]) distance[i] = nearby.distance_within(samples[i].point);

@@ -31,15 +31,17 @@
 //! level set it was meshed from (shells dropped at extraction would not
 //! show): 0 on a triangle the output kept from the input (the same corners
 //! as floats), else the distance to the nearest of the triangles it did not
-//! keep when that is within `limits.distance` (found in a grid of cells of
-//! about that width), and exactly on the whole output for the far samples
-//! that count.
-//! Costs a hash of both meshes' triangles, a sort of the triangles the
-//! output did not keep by cell, an AABB tree over the whole output only
-//! when some sample that counts is far, a winding-number tree over the
-//! input only when some sample is far or for the volume, two to four
-//! winding numbers per far sample and kFidelityVolumePoints for the volume;
-//! queries in parallel. Reports progress; throws Error(CANCELLED).
+//! keep when that is within `limits.distance` (those no wider than twice
+//! that, as a level set's are, found in a grid of cells of about that
+//! width; wider ones in an AABB tree), and exactly on the whole output for
+//! the far samples that count.
+//! Costs a hash of both meshes' triangles, a sort by cell of the narrow
+//! triangles the output did not keep and a tree of the wide ones, an AABB
+//! tree over the whole output only when some sample that counts is far, a
+//! winding-number tree over the input only when some sample is far or for
+//! the volume, two to four winding numbers per far sample and
+//! kFidelityVolumePoints for the volume; queries in parallel. Reports
+//! progress; throws Error(CANCELLED).
 #pragma once
 
 #include <cstddef>
