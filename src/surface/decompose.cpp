@@ -7,7 +7,9 @@
 #include <map>
 #include <string>
 
+#include "core/figure_text.h"
 #include "core/stage_clock.h"
+#include "core/vec3_ops.h"
 #include "surface/boundary_smoothing.h"
 #include "surface/shell_from_mesh.h"
 #include "surface/undercut_depth.h"
@@ -72,7 +74,22 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
     const double depth_bound = settings.decomposition.max_undercut_depth / result.shell.unit_scale;
     double deepest = 0;
     Vec3 deepest_at{0, 0, 0};
+    // Each part's centre: the area-weighted centroid of its S_low triangles.
+    std::vector<Vec3> centre(d.parts.size(), Vec3{0, 0, 0});
+    std::vector<double> weight(d.parts.size(), 0.0);
+    for (size_t t = 0; t < d.part_of_triangle.size(); ++t) {
+        const int p = d.part_of_triangle[t];
+        if (p < 0 || size_t(p) >= d.parts.size()) continue;
+        const Triangle& tri = result.shell.outer.triangles[t];
+        const double a = triangle_area(result.shell.outer, tri);
+        for (uint32_t v : tri) centre[p] = centre[p] + (a / 3.0) * result.shell.outer.vertices[v];
+        weight[p] += a;
+    }
+    for (size_t p = 0; p < d.parts.size(); ++p)
+        if (weight[p] > 0.0) centre[p] = (1.0 / weight[p]) * centre[p];
+    size_t costliest = 0;
     for (size_t p = 0; p < d.parts.size(); ++p) {
+        if (d.parts[p].energy.total > d.parts[costliest].energy.total) costliest = p;
         double area = 0;
         for (size_t i = 0; i < d.parts[p].surface.size(); ++i)
             if (d.parts[p].surface.kind[i] == PartSurface::outer) area += d.parts[p].surface.area[i];
@@ -88,6 +105,7 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
                                    {"parting_direction", direction},
                                    {"moldability_energy", d.parts[p].energy.total},
                                    {"area", area / (result.shell.unit_scale * result.shell.unit_scale)},
+                                   {"centre", centre[p]},
                                    {"undercut_depth", undercut.depth},
                                    {"undercut_at", undercut.at}});
     }
@@ -102,15 +120,29 @@ DecomposeResult decompose_mesh(const Mesh& input, const DecomposeSettings& setti
         report["warnings"].push_back("the part is thinner than twice the shell thickness everywhere (one thin "
                                      "feature): its parts are cast solid, as with --solid");
     if (deepest > depth_bound)
-        report["warnings"].push_back("an undercut " + std::to_string(deepest) + " mm deep at (" +
-                                     std::to_string(deepest_at[0]) + ", " + std::to_string(deepest_at[1]) + ", " +
-                                     std::to_string(deepest_at[2]) + ") along its part's parting direction is over "
-                                     "the bound " + std::to_string(depth_bound) + " mm with any part count tried: "
+        report["warnings"].push_back("an undercut " + figure_text(deepest) + " mm deep at (" +
+                                     figure_text(deepest_at[0]) + ", " + figure_text(deepest_at[1]) + ", " +
+                                     figure_text(deepest_at[2]) + ") along its part's parting direction is over "
+                                     "the bound " + figure_text(depth_bound) + " mm with any part count tried: "
                                      "the mold fills it, leaving the input up to that deep inside the cast part "
                                      "(a cut there, --edits, may avoid it)");
-    if (!(energy < settings.decomposition.gamma))
-        report["warnings"].push_back("the total moldability energy " + std::to_string(energy) +
-                                     " is not under gamma " + std::to_string(settings.decomposition.gamma));
+    if (!(energy < settings.decomposition.gamma) && !d.parts.empty()) {
+        // Where: the part that carries most of the energy, and which term.
+        const MoldabilityEnergy& worst = d.parts[costliest].energy;
+        const Vec3& at = centre[costliest];
+        report["warnings"].push_back(
+            "the total moldability energy " + figure_text(energy) + " is not under gamma " +
+            figure_text(settings.decomposition.gamma) +
+            (settings.decomposition.parts > 0 ? " with " + std::to_string(d.parts.size()) + " parts"
+                                              : " with any part count tried, up to " +
+                                                    std::to_string(settings.decomposition.max_parts)) +
+            ": part " +
+            std::to_string(costliest) + " (around " + figure_text(at[0]) + ", " + figure_text(at[1]) + ", " +
+            figure_text(at[2]) + " mm) carries " + figure_text(worst.total) + " of it, mostly " +
+            (worst.overlap > worst.overhang ? "overlap (surface both halves of its mold would hold)"
+                                            : "overhang (surface facing away from its parting direction)") +
+            "; a cut there (--edits) may bring it under");
+    }
     return result;
 }
 

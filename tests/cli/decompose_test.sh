@@ -1,5 +1,5 @@
 # decompose_test.sh — `fabvdb decompose`: a run writes the three files and the
-# report; edits from a file are applied (a merge of the two parts of the torus
+# report; over gamma, a warning names the part and where; edits from a file are applied (a merge of the two parts of the torus
 # leaves one part; a smoothing stroke across the boundary is recorded); bad options exit 1 and a bad edits file exits 2, both
 # without creating the output folder; `fabvdb info` reads decomposition.ply.
 source "$(dirname "$0")/lib.sh"
@@ -30,6 +30,12 @@ expect_exit 0 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/smoothed" --low-
   --edits "$WORK/smooth.json" --report "$WORK/s.json" --quiet
 expect_match "$STDOUT" '^2 parts'
 expect_match "$(cat "$WORK/s.json")" '"type": "smooth"'
+
+# Over gamma (a gamma no decomposition meets): a warning on stderr, even with
+# --quiet, names the part that carries most of the energy and where it is.
+expect_exit 0 "$FABVDB" decompose "$MESHES/torus.obj" -o "$WORK/over" --low-res 1200 --parts 2 --gamma 1e-12 --quiet
+expect_match "$STDOUT" 'WARNING: over gamma'
+expect_match "$STDERR" 'warning: the total moldability energy .* is not under gamma 1e-12 with 2 parts: part [01] [(]around .* mm[)] carries'
 
 cat > "$WORK/bad.json" <<'JSON'
 {"edits": [{"type": "cut", "points": [[0, 0, 0]]}]}

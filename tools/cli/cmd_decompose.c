@@ -64,6 +64,7 @@ static int run_decompose(cli_run* run) {
     printf("%.0f parts, total moldability energy %.5f (gamma %g)%s%s\n", count, energy, options.gamma,
            under != 0 ? "" : "  WARNING: over gamma",
            solid_chosen != 0 ? "  NOTE: thinner than twice the shell everywhere, parts cast solid (as --solid)" : "");
+    cli_print_warnings(run, report);
     cli_note(run, "wrote %s", output->text);
     code = cli_write_report(run, report);
     fabvdb_report_free(report);
