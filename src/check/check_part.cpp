@@ -11,6 +11,7 @@
 
 #include "check/build_fit.h"
 #include "check/overhang_triangles.h"
+#include "check/print_frame.h"
 #include "check/resin_cups.h"
 #include "check/thin_sheets.h"
 #include "check/units_guess.h"
@@ -432,8 +433,7 @@ nlohmann::json overhang_check(const Mesh& surface, const Vec3& up, double voxel,
 //! The bounding-box sides of the mesh in the print frame: z along `up`, x and
 //! y completing it (the shortest turn taking `up` to +z).
 Vec3 print_frame_size(const Mesh& mesh, const Vec3& up) {
-    const Eigen::Vector3d u = Eigen::Vector3d(up[0], up[1], up[2]).normalized();
-    const Eigen::Matrix3d turn = Eigen::Quaterniond::FromTwoVectors(u, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Matrix3d turn = print_frame_turn(up);
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (const Triangle& t : mesh.triangles)
         for (uint32_t v : t) {

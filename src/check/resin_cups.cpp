@@ -15,6 +15,7 @@
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/parallel_for.h>
 
+#include "check/print_frame.h"
 #include "core/disjoint_sets.h"
 
 namespace fabvdb::check {
@@ -37,9 +38,8 @@ CupSearch find_cups(const openvdb::FloatGrid& grid, const std::vector<Vec3>& sur
                     uint64_t max_cells, double min_volume, Progress& progress) {
     progress.stage("cups");
     CupSearch result;
-    const Eigen::Vector3d u = Eigen::Vector3d(up[0], up[1], up[2]).normalized();
     // turn: part frame to print frame (up to +z); its transpose turns back.
-    const Eigen::Matrix3d turn = Eigen::Quaterniond::FromTwoVectors(u, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Matrix3d turn = print_frame_turn(up);
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (const Vec3& p : surface_points) {
         const Eigen::Vector3d q = turn * Eigen::Vector3d(p[0], p[1], p[2]);
