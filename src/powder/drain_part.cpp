@@ -13,6 +13,7 @@
 #include <openvdb/tools/MeshToVolume.h>
 
 #include "core/error.h"
+#include "core/figure_text.h"
 #include "core/stage_clock.h"
 #include "core/vec3_ops.h"
 #include "surface/mesh_topology.h"
@@ -279,15 +280,11 @@ DrainPartResult hollow_plan_and_drill(const Mesh& input, const DrainPartOptions&
         result.drilled = volume::extract_mesh(*drilled, 0.0, progress);
         clock.lap("extract");
         measure_drained(input, result, clock, progress);
-        if (result.fidelity.passed || refinement == kSurfaceRefinements ||
-            result.fidelity.far_sheet_share > result.fidelity_limits.far_share)
+        if (refinement == kSurfaceRefinements || !volume::finer_may_pass(result.fidelity, result.fidelity_limits))
             return result;
-        std::ostringstream message;
-        message.precision(3);
-        message << options.input_name << ": at voxel " << surface_voxel
-                << " mm the drilled part was not the input's model (" << result.fidelity.defect
-                << "), so it was meshed again at " << 0.5 * surface_voxel << " mm";
-        result.warnings.push_back(message.str());
+        result.warnings.push_back(options.input_name + ": at voxel " + figure_text(surface_voxel) +
+                                  " mm the drilled part was not the input's model (" + result.fidelity.defect +
+                                  "), so it was meshed again at " + figure_text(0.5 * surface_voxel) + " mm");
         surface_voxel *= 0.5;
     }
 }

@@ -43,11 +43,7 @@ FaithfulRepair faithful_repair(const Mesh& input, const Mesh& source, RepairOpti
         result.fidelity_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         result.repaired = std::move(repaired);
         result.voxels.push_back(voxel);
-        // Far sheets enclose nothing at any voxel: refining cannot bring
-        // enough of the surface back when they alone fail the gate.
-        if (result.fidelity.passed || attempt == refinements ||
-            result.fidelity.far_sheet_share > result.limits.far_share)
-            return result;
+        if (attempt == refinements || !finer_may_pass(result.fidelity, result.limits)) return result;
         options.distance.voxel_size = 0.5 * voxel;
     }
 }

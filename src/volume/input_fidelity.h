@@ -105,6 +105,12 @@ FidelityLimits voxel_limits(double voxel);
 Fidelity measure_fidelity(const Mesh& input, const Mesh& output, const FidelityLimits& limits,
                           Progress& progress);
 
+//! Whether the same output made at a finer voxel may pass: it failed, and
+//! not on its far sheets alone (no voxel size makes a sheet solid).
+inline bool finer_may_pass(const Fidelity& fidelity, const FidelityLimits& limits) {
+    return !fidelity.passed && !(fidelity.far_sheet_share > limits.far_share);
+}
+
 //! Throws Error(INTERNAL), "NAME: the WHAT is not the input's model: DEFECT",
 //! when `fidelity` did not pass.
 void require_faithful(const Fidelity& fidelity, const std::string& input_name, const std::string& what);
