@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace fabvdb::volume {
 
@@ -11,7 +12,7 @@ namespace {
 constexpr int leaf_dim = int(FloatLeaf::DIM);
 constexpr int leaf_size = int(FloatLeaf::SIZE);
 // The tree's approximation error stays under this (winding_number_test).
-constexpr double margin = 0.1;
+constexpr double margin = 0.02;
 // A group this large is sampled a second time, at least 4 voxels away.
 constexpr int large_group = 32, apart_squared = 16;
 // Face and edge neighbours, the half with a later offset.
@@ -88,6 +89,33 @@ Vec3 world_position(const openvdb::math::Transform& transform, const openvdb::Co
     return {p[0], p[1], p[2]};
 }
 
+// w at a leaf's voxels: the first few from walks of the tree, the rest
+// through the field of the leaf's box (winding_number.h), made once a leaf
+// needs more evaluations than its lattice costs.
+class LeafWinding {
+public:
+    LeafWinding(const WindingNumber& winding, const FloatLeaf& leaf, const openvdb::math::Transform& transform)
+        : winding_(winding), leaf_(leaf), transform_(transform) {}
+    float operator()(int offset) {
+        const Vec3 q = world_position(transform_, leaf_.offsetToGlobalCoord(offset));
+        if (++evaluations_ <= walks_before_field) return float(winding_(q));
+        if (!field_) {
+            const Vec3 lo = world_position(transform_, leaf_.origin());
+            const Vec3 hi = world_position(transform_, leaf_.origin().offsetBy(leaf_dim - 1));
+            field_ = winding_.box_field({lo, hi});
+        }
+        return float(winding_(q, *field_));
+    }
+
+private:
+    static constexpr int walks_before_field = 16;
+    const WindingNumber& winding_;
+    const FloatLeaf& leaf_;
+    const openvdb::math::Transform& transform_;
+    int evaluations_ = 0;
+    std::optional<WindingNumber::BoxField> field_;
+};
+
 // (1/2 - w) / |∇w| at `offset` by central differences (one-sided at the
 // leaf's faces), clamped to ±background.
 float value_from_winding(const float* w, int offset, double voxel, float background) {
@@ -129,9 +157,7 @@ bool band_leaf_winding(const FloatLeaf& leaf, const WindingNumber& winding, cons
         if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < apart_squared) continue;
         if (second[r] < 0 || values[it.pos()] > values[second[r]]) second[r] = int16_t(it.pos());
     }
-    const auto evaluate = [&](int offset) {
-        return float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
-    };
+    LeafWinding evaluate(winding, leaf, transform);
     float group_w[leaf_size];
     bool per_voxel[leaf_size];
     bool exact = true;
@@ -164,9 +190,7 @@ void off_band_leaf_values(FloatLeaf& leaf, const WindingNumber& winding, const o
     if (off_band.isOff()) return;
     const auto linked = [](int, int, int) { return true; };
     Groups groups(off_band, linked);
-    const auto evaluate = [&](int offset) {
-        return float(winding(world_position(transform, leaf.offsetToGlobalCoord(offset))));
-    };
+    LeafWinding evaluate(winding, leaf, transform);
     // A central difference of w is at most the bound per axis, so a voxel
     // whose w lies farther than sqrt(3) × bound × background from 1/2 is
     // clamped.

@@ -12,7 +12,9 @@
 //! voxel by voxel, as is a large group whose second sample, 4 voxels away,
 //! disagrees about the side. For a closed cycle (closed_cycle.h) the bound is
 //! 0 and every group costs one or two evaluations; near the holes of an open
-//! input, where the bound is large, every voxel costs one.
+//! input, where the bound is large, every voxel costs one. A leaf that needs
+//! more than 16 evaluations takes them through its box's field
+//! (WindingNumber::box_field: one walk for the far nodes, interpolated).
 #pragma once
 
 #include <openvdb/openvdb.h>

@@ -54,7 +54,7 @@ using FloatLeaf = openvdb::FloatTree::LeafNodeType;
 constexpr int leaf_dim = int(FloatLeaf::DIM);
 constexpr int leaf_size = int(FloatLeaf::SIZE);
 // An input counts as enclosing volume when some band voxel is clearly inside
-// (w >= 0.6, above the dipole approximation's error).
+// (w >= 0.6, far above the tree's approximation error).
 constexpr double clearly_inside = 0.6;
 // Under this share of its area enclosing volume (enclosed_share.h) an input
 // encloses nothing: soups, sheets, bowls and crossing tangles measure under

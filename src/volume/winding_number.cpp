@@ -7,11 +7,22 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "core/vec3_ops.h"
+
 namespace fabvdb::volume {
 
 namespace {
 
 constexpr uint32_t leaf_size = 8;
+// Triangles longer than this many times the median triangle's longest edge
+// (and than the bounding-box diagonal / min_pieces_across) are held as pieces.
+constexpr double long_triangle = 2.0;
+constexpr double min_pieces_across = 256.0;
+// A node's expansion goes into a box's lattice when its centre lies farther
+// than this many half-diagonals from the box's centre (triquadratic
+// interpolation errs by about 1.5 / reach³ of the node's share there; at 4
+// the lattice's finer nodes still err less than the walk: winding_number_test).
+constexpr double box_far_reach = 4.0;
 // Subtrees over more triangles than this are built in parallel tasks: one
 // over 16k triangles takes about a millisecond, well above a task's overhead.
 constexpr uint32_t parallel_grain = 1u << 14;
@@ -82,23 +93,80 @@ uint32_t subtree_nodes(uint32_t count) {
     return count <= leaf_size ? 1 : 1 + subtree_nodes(count / 2) + subtree_nodes(count - count / 2);
 }
 
+// Appends triangle (a, b, c)'s corners, cut by longest-edge bisection into
+// pieces with no edge longer than √piece_squared (same orientation, so their
+// solid angles add up to the triangle's).
+void append_pieces(const Vec3& a, const Vec3& b, const Vec3& c, double piece_squared, std::vector<double>& corners) {
+    const Vec3* p[3] = {&a, &b, &c};
+    int longest = 0;
+    double longest_squared = 0.0;
+    for (int e = 0; e < 3; ++e) {
+        const Vec3 d = *p[(e + 1) % 3] - *p[e];
+        if (dot(d, d) > longest_squared) longest_squared = dot(d, d), longest = e;
+    }
+    if (longest_squared > piece_squared) {
+        const Vec3 &from = *p[longest], &to = *p[(longest + 1) % 3], &apex = *p[(longest + 2) % 3];
+        const Vec3 middle = 0.5 * (from + to);
+        append_pieces(from, middle, apex, piece_squared, corners);
+        append_pieces(middle, to, apex, piece_squared, corners);
+        return;
+    }
+    for (const Vec3* corner : p) corners.insert(corners.end(), corner->begin(), corner->end());
+}
+
+// The far field of a node at q, times 4π: its moments about its centre
+// contracted with the derivatives of the kernel (x − q) / |x − q|³ at the
+// centre, r = centre − q (orders 0, 1 and 2 of the Taylor expansion in x).
+double far_field(const double* area_normal, const float* m, const float* s, const double* r, double r_squared) {
+    const double inverse_3 = 1.0 / (r_squared * std::sqrt(r_squared));
+    const double inverse_5 = inverse_3 / r_squared, inverse_7 = inverse_5 / r_squared;
+    const double order_0 = (area_normal[0] * r[0] + area_normal[1] * r[1] + area_normal[2] * r[2]) * inverse_3;
+    double trace = 0.0, rmr = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        trace += m[4 * i];
+        rmr += r[i] * (m[3 * i] * r[0] + m[3 * i + 1] * r[1] + m[3 * i + 2] * r[2]);
+    }
+    const double order_1 = trace * inverse_3 - 3.0 * rmr * inverse_5;
+    // Per component i of n, S_i = the symmetric matrix xx xy xz yy yz zz:
+    // diagonal = Σ_i (S_i r)_i, traces = Σ_i r_i tr S_i, cubic = Σ_i r_i rᵀ S_i r.
+    double diagonal = 0.0, traces = 0.0, cubic = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const float* q = s + 6 * i;
+        const double sr[3] = {q[0] * r[0] + q[1] * r[1] + q[2] * r[2], q[1] * r[0] + q[3] * r[1] + q[4] * r[2],
+                              q[2] * r[0] + q[4] * r[1] + q[5] * r[2]};
+        diagonal += sr[i];
+        traces += r[i] * (q[0] + q[3] + q[5]);
+        cubic += r[i] * (r[0] * sr[0] + r[1] * sr[1] + r[2] * sr[2]);
+    }
+    const double order_2 = 0.5 * (-3.0 * (2.0 * diagonal + traces) * inverse_5 + 15.0 * cubic * inverse_7);
+    return order_0 + order_1 + order_2;
+}
+
 }  // namespace
 
 WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
-    std::vector<uint32_t> kept;
-    kept.reserve(mesh.triangles.size());
-    std::vector<double> all_corners;
-    all_corners.reserve(mesh.triangles.size() * 9);
+    std::vector<double> longest_squared;
+    longest_squared.reserve(mesh.triangles.size());
     for (const Triangle& t : mesh.triangles) {
         const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const Vec3 n = cross(b - a, c - a);
         if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;
-        kept.push_back(uint32_t(all_corners.size() / 9));
-        for (const Vec3* p : {&a, &b, &c}) all_corners.insert(all_corners.end(), p->begin(), p->end());
+        longest_squared.push_back(std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)}));
     }
-    const uint32_t count = uint32_t(kept.size());
+    if (longest_squared.empty()) return;
+    std::nth_element(longest_squared.begin(), longest_squared.begin() + longest_squared.size() / 2,
+                     longest_squared.end());
+    const double median = std::sqrt(longest_squared[longest_squared.size() / 2]);
+    const double piece = std::max(long_triangle * median, bounding_box(mesh).diagonal() / min_pieces_across);
+    std::vector<double> all_corners;
+    all_corners.reserve(longest_squared.size() * 9);
+    for (const Triangle& t : mesh.triangles) {
+        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        const Vec3 n = cross(b - a, c - a);
+        if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;
+        append_pieces(a, b, c, piece * piece, all_corners);
+    }
+    const uint32_t count = uint32_t(all_corners.size() / 9);
     std::vector<double> centroids(size_t(count) * 3);
     for (uint32_t i = 0; i < count; ++i)
         for (int k = 0; k < 3; ++k)
@@ -106,7 +174,6 @@ WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
     std::vector<uint32_t> order(count);
     std::iota(order.begin(), order.end(), 0u);
     corners_.swap(all_corners);
-    if (count == 0) return;
     nodes_.resize(subtree_nodes(count));
     build(0, count, 0, centroids, order, accuracy);
     std::vector<double> sorted(corners_.size());
@@ -148,6 +215,33 @@ uint32_t WindingNumber::build(uint32_t first, uint32_t count, uint32_t index, co
     std::copy_n(center, 3, node.center);
     std::copy_n(normal, 3, node.area_normal);
     node.far_squared = accuracy * accuracy * radius_squared;
+    // Moments about the centre: Σ n ⊗ (c − centre), and Σ n_i × the mean of
+    // (x − centre)(x − centre)ᵀ over the triangle, which is
+    // (c − centre)(c − centre)ᵀ + Σ over corners (v − c)(v − c)ᵀ / 12.
+    double first_moment[9] = {}, second_moment[18] = {};
+    constexpr int pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
+    for (uint32_t i = first; i < first + count; ++i) {
+        const double* p = &corners_[9 * size_t(order[i])];
+        const double* c = &centroids[3 * size_t(order[i])];
+        const double u[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
+        const double v[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+        const double n[3] = {0.5 * (u[1] * v[2] - u[2] * v[1]), 0.5 * (u[2] * v[0] - u[0] * v[2]),
+                             0.5 * (u[0] * v[1] - u[1] * v[0])};
+        const double d[3] = {c[0] - center[0], c[1] - center[1], c[2] - center[2]};
+        double mean[6];
+        for (int e = 0; e < 6; ++e) {
+            const int j = pair[e][0], k = pair[e][1];
+            double spread = 0.0;
+            for (int corner = 0; corner < 3; ++corner) spread += (p[3 * corner + j] - c[j]) * (p[3 * corner + k] - c[k]);
+            mean[e] = d[j] * d[k] + spread / 12.0;
+        }
+        for (int a = 0; a < 3; ++a) {
+            for (int j = 0; j < 3; ++j) first_moment[3 * a + j] += n[a] * d[j];
+            for (int e = 0; e < 6; ++e) second_moment[6 * a + e] += n[a] * mean[e];
+        }
+    }
+    std::copy_n(first_moment, 9, node.first_moment);
+    std::copy_n(second_moment, 18, node.second_moment);
     if (count <= leaf_size) {
         node.first = first;
         node.count = count;
@@ -181,28 +275,90 @@ double WindingNumber::exact(const Vec3& q) const {
     return sum.fraction();
 }
 
-double WindingNumber::operator()(const Vec3& q) const {
-    if (nodes_.empty()) return 0.0;
+double WindingNumber::walk(const Vec3& q, const uint32_t* roots, size_t count) const {
     double sum = 0.0;
     SolidAngleSum near;
     uint32_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const Node& node = nodes_[stack[--top]];
-        const double d[3] = {node.center[0] - q[0], node.center[1] - q[1], node.center[2] - q[2]};
-        const double distance_squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        if (distance_squared > node.far_squared) {
-            const double dot = node.area_normal[0] * d[0] + node.area_normal[1] * d[1] + node.area_normal[2] * d[2];
-            sum += dot * inverse_four_pi / (distance_squared * std::sqrt(distance_squared));
-        } else if (node.count > 0) {
-            add_triangles(corners_.data(), node.first, node.count, q, near);
-        } else {
-            stack[top++] = node.first;
-            stack[top++] = uint32_t(&node - nodes_.data()) + 1;
+    for (size_t root = 0; root < count; ++root) {
+        int top = 0;
+        stack[top++] = roots[root];
+        while (top > 0) {
+            const Node& node = nodes_[stack[--top]];
+            const double d[3] = {node.center[0] - q[0], node.center[1] - q[1], node.center[2] - q[2]};
+            const double distance_squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (distance_squared > node.far_squared) {
+                sum += far_field(node.area_normal, node.first_moment, node.second_moment, d, distance_squared);
+            } else if (node.count > 0) {
+                add_triangles(corners_.data(), node.first, node.count, q, near);
+            } else {
+                stack[top++] = node.first;
+                stack[top++] = uint32_t(&node - nodes_.data()) + 1;
+            }
         }
     }
-    return sum + near.fraction();
+    return sum * inverse_four_pi + near.fraction();
+}
+
+double WindingNumber::operator()(const Vec3& q) const {
+    if (nodes_.empty()) return 0.0;
+    const uint32_t root = 0;
+    return walk(q, &root, 1);
+}
+
+WindingNumber::BoxField WindingNumber::box_field(const BoundingBox& box) const {
+    BoxField field;
+    field.lo = box.min;
+    for (int k = 0; k < 3; ++k) field.step[k] = box.max[k] > box.min[k] ? 0.5 * (box.max[k] - box.min[k]) : 1.0;
+    if (nodes_.empty()) return field;
+    const Vec3 centre = 0.5 * (box.min + box.max);
+    const double reach = box_far_reach * 0.5 * norm(box.max - box.min);
+    std::vector<uint32_t> far;
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+        const uint32_t index = stack.back();
+        stack.pop_back();
+        const Node& node = nodes_[index];
+        double to_box = 0.0, to_centre = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const double outside = std::max({box.min[k] - node.center[k], node.center[k] - box.max[k], 0.0});
+            to_box += outside * outside;
+            to_centre += (node.center[k] - centre[k]) * (node.center[k] - centre[k]);
+        }
+        if (to_box > node.far_squared && to_centre > reach * reach) far.push_back(index);
+        else if (node.count > 0 || to_box > node.far_squared) field.near.push_back(index);
+        else {
+            stack.push_back(node.first);
+            stack.push_back(index + 1);
+        }
+    }
+    for (int point = 0; point < 27; ++point) {
+        const Vec3 q{field.lo[0] + field.step[0] * (point / 9), field.lo[1] + field.step[1] * (point / 3 % 3),
+                     field.lo[2] + field.step[2] * (point % 3)};
+        double sum = 0.0;
+        for (const uint32_t index : far) {
+            const Node& node = nodes_[index];
+            const double d[3] = {node.center[0] - q[0], node.center[1] - q[1], node.center[2] - q[2]};
+            sum += far_field(node.area_normal, node.first_moment, node.second_moment, d,
+                             d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        }
+        field.lattice[point] = sum * inverse_four_pi;
+    }
+    return field;
+}
+
+double WindingNumber::operator()(const Vec3& q, const BoxField& field) const {
+    // Lagrange weights of the lattice's three planes per axis, at u in [0, 2].
+    double weight[3][3];
+    for (int k = 0; k < 3; ++k) {
+        const double u = (q[k] - field.lo[k]) / field.step[k];
+        weight[k][0] = 0.5 * (u - 1.0) * (u - 2.0);
+        weight[k][1] = -u * (u - 2.0);
+        weight[k][2] = 0.5 * u * (u - 1.0);
+    }
+    double far = 0.0;
+    for (int point = 0; point < 27; ++point)
+        far += weight[0][point / 9] * weight[1][point / 3 % 3] * weight[2][point % 3] * field.lattice[point];
+    return far + walk(q, field.near.data(), field.near.size());
 }
 
 }  // namespace fabvdb::volume
