@@ -142,6 +142,10 @@ double far_field(const double* area_normal, const float* m, const float* s, cons
     return order_0 + order_1 + order_2;
 }
 
+
+// The pairs (j, k) of a symmetric 3 × 3 matrix's entries xx xy xz yy yz zz.
+constexpr int moment_pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
+
 }  // namespace
 
 WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
@@ -211,38 +215,12 @@ uint32_t WindingNumber::build(uint32_t first, uint32_t count, uint32_t index, co
             radius_squared = std::max(radius_squared, dx * dx + dy * dy + dz * dz);
         }
     }
-    Node node;
+    Node node{};
     std::copy_n(center, 3, node.center);
     std::copy_n(normal, 3, node.area_normal);
     node.far_squared = accuracy * accuracy * radius_squared;
-    // Moments about the centre: Σ n ⊗ (c − centre), and Σ n_i × the mean of
-    // (x − centre)(x − centre)ᵀ over the triangle, which is
-    // (c − centre)(c − centre)ᵀ + Σ over corners (v − c)(v − c)ᵀ / 12.
-    double first_moment[9] = {}, second_moment[18] = {};
-    constexpr int pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
-    for (uint32_t i = first; i < first + count; ++i) {
-        const double* p = &corners_[9 * size_t(order[i])];
-        const double* c = &centroids[3 * size_t(order[i])];
-        const double u[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
-        const double v[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
-        const double n[3] = {0.5 * (u[1] * v[2] - u[2] * v[1]), 0.5 * (u[2] * v[0] - u[0] * v[2]),
-                             0.5 * (u[0] * v[1] - u[1] * v[0])};
-        const double d[3] = {c[0] - center[0], c[1] - center[1], c[2] - center[2]};
-        double mean[6];
-        for (int e = 0; e < 6; ++e) {
-            const int j = pair[e][0], k = pair[e][1];
-            double spread = 0.0;
-            for (int corner = 0; corner < 3; ++corner) spread += (p[3 * corner + j] - c[j]) * (p[3 * corner + k] - c[k]);
-            mean[e] = d[j] * d[k] + spread / 12.0;
-        }
-        for (int a = 0; a < 3; ++a) {
-            for (int j = 0; j < 3; ++j) first_moment[3 * a + j] += n[a] * d[j];
-            for (int e = 0; e < 6; ++e) second_moment[6 * a + e] += n[a] * mean[e];
-        }
-    }
-    std::copy_n(first_moment, 9, node.first_moment);
-    std::copy_n(second_moment, 18, node.second_moment);
     if (count <= leaf_size) {
+        leaf_moments(first, count, centroids, order, node);
         node.first = first;
         node.count = count;
         nodes_[index] = node;
@@ -265,8 +243,58 @@ uint32_t WindingNumber::build(uint32_t first, uint32_t count, uint32_t index, co
         node.first = build(first, half, index + 1, centroids, order, accuracy);
         end = build(first + half, count - half, node.first, centroids, order, accuracy);
     }
+    add_child_moments(nodes_[index + 1], node);
+    add_child_moments(nodes_[node.first], node);
     nodes_[index] = node;
     return end;
+}
+
+void WindingNumber::leaf_moments(uint32_t first, uint32_t count, const std::vector<double>& centroids,
+                                 const std::vector<uint32_t>& order, Node& node) const {
+    // Σ n ⊗ (c − centre), and Σ n_i × the mean of (x − centre)(x − centre)ᵀ
+    // over the triangle, which is (c − centre)(c − centre)ᵀ + Σ over its
+    // corners (v − c)(v − c)ᵀ / 12.
+    double first_moment[9] = {}, second_moment[18] = {};
+    for (uint32_t i = first; i < first + count; ++i) {
+        const double* p = &corners_[9 * size_t(order[i])];
+        const double* c = &centroids[3 * size_t(order[i])];
+        const double u[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
+        const double v[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+        const double n[3] = {0.5 * (u[1] * v[2] - u[2] * v[1]), 0.5 * (u[2] * v[0] - u[0] * v[2]),
+                             0.5 * (u[0] * v[1] - u[1] * v[0])};
+        const double d[3] = {c[0] - node.center[0], c[1] - node.center[1], c[2] - node.center[2]};
+        double mean[6];
+        for (int e = 0; e < 6; ++e) {
+            const int j = moment_pair[e][0], k = moment_pair[e][1];
+            double spread = 0.0;
+            for (int corner = 0; corner < 3; ++corner) spread += (p[3 * corner + j] - c[j]) * (p[3 * corner + k] - c[k]);
+            mean[e] = d[j] * d[k] + spread / 12.0;
+        }
+        for (int a = 0; a < 3; ++a) {
+            for (int j = 0; j < 3; ++j) first_moment[3 * a + j] += n[a] * d[j];
+            for (int e = 0; e < 6; ++e) second_moment[6 * a + e] += n[a] * mean[e];
+        }
+    }
+    std::copy_n(first_moment, 9, node.first_moment);
+    std::copy_n(second_moment, 18, node.second_moment);
+}
+
+void WindingNumber::add_child_moments(const Node& child, Node& node) {
+    // The child's moments moved from its centre to the node's: with
+    // s = child centre − node centre, M += M_c + N_c ⊗ s and
+    // Q_ijk += Q_c,ijk + M_c,ij s_k + M_c,ik s_j + N_c,i s_j s_k.
+    const double s[3] = {child.center[0] - node.center[0], child.center[1] - node.center[1],
+                         child.center[2] - node.center[2]};
+    for (int a = 0; a < 3; ++a) {
+        const double* n = child.area_normal;
+        const float* m = child.first_moment + 3 * a;
+        for (int j = 0; j < 3; ++j) node.first_moment[3 * a + j] += float(m[j] + n[a] * s[j]);
+        for (int e = 0; e < 6; ++e) {
+            const int j = moment_pair[e][0], k = moment_pair[e][1];
+            node.second_moment[6 * a + e] +=
+                float(child.second_moment[6 * a + e] + m[j] * s[k] + m[k] * s[j] + n[a] * s[j] * s[k]);
+        }
+    }
 }
 
 double WindingNumber::exact(const Vec3& q) const {

@@ -67,6 +67,11 @@ private:
     uint32_t build(uint32_t first, uint32_t count, uint32_t index, const std::vector<double>& centroids,
                    std::vector<uint32_t>& order, double accuracy);
 
+    //! A leaf's moments about its centre, from its triangles.
+    void leaf_moments(uint32_t first, uint32_t count, const std::vector<double>& centroids,
+                      const std::vector<uint32_t>& order, Node& node) const;
+    //! Adds a child's moments, moved to the node's centre, to the node's.
+    static void add_child_moments(const Node& child, Node& node);
     //! The far field (times 4π, as far_field) and the exact sum of the near
     //! triangles at q, over the subtrees at `roots`.
     double walk(const Vec3& q, const uint32_t* roots, size_t count) const;
