@@ -149,12 +149,15 @@ constexpr int moment_pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2
 }  // namespace
 
 WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
+    const auto has_area = [&](const Triangle& t) {
+        const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+        return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
+    };
     std::vector<double> longest_squared;
     longest_squared.reserve(mesh.triangles.size());
     for (const Triangle& t : mesh.triangles) {
+        if (!has_area(t)) continue;
         const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-        const Vec3 n = cross(b - a, c - a);
-        if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;
         longest_squared.push_back(std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)}));
     }
     if (longest_squared.empty()) return;
@@ -164,12 +167,9 @@ WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
     const double piece = std::max(long_triangle * median, bounding_box(mesh).diagonal() / min_pieces_across);
     std::vector<double> all_corners;
     all_corners.reserve(longest_squared.size() * 9);
-    for (const Triangle& t : mesh.triangles) {
-        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-        const Vec3 n = cross(b - a, c - a);
-        if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) continue;
-        append_pieces(a, b, c, piece * piece, all_corners);
-    }
+    for (const Triangle& t : mesh.triangles)
+        if (has_area(t))
+            append_pieces(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], piece * piece, all_corners);
     const uint32_t count = uint32_t(all_corners.size() / 9);
     std::vector<double> centroids(size_t(count) * 3);
     for (uint32_t i = 0; i < count; ++i)
