@@ -91,20 +91,19 @@ Vec3 world_position(const openvdb::math::Transform& transform, const openvdb::Co
 
 // w at a leaf's voxels: the first few from walks of the tree, the rest
 // through the field of the leaf's box (winding_number.h), made once a leaf
-// needs more evaluations than its lattice costs.
+// needs more evaluations than its lattice costs, where it pays.
 class LeafWinding {
 public:
     LeafWinding(const WindingNumber& winding, const FloatLeaf& leaf, const openvdb::math::Transform& transform)
         : winding_(winding), leaf_(leaf), transform_(transform) {}
     float operator()(int offset) {
         const Vec3 q = world_position(transform_, leaf_.offsetToGlobalCoord(offset));
-        if (++evaluations_ <= walks_before_field) return float(winding_(q));
-        if (!field_) {
+        if (++evaluations_ == walks_before_field + 1) {
             const Vec3 lo = world_position(transform_, leaf_.origin());
             const Vec3 hi = world_position(transform_, leaf_.origin().offsetBy(leaf_dim - 1));
             field_ = winding_.box_field({lo, hi});
         }
-        return float(winding_(q, *field_));
+        return float(field_ ? winding_(q, *field_) : winding_(q));
     }
 
 private:

@@ -15,7 +15,8 @@ namespace {
 
 constexpr uint32_t leaf_size = 8;
 // Triangles longer than this many times the median triangle's longest edge
-// (and than the bounding-box diagonal / min_pieces_across) are held as pieces.
+// (and than the bounding-box diagonal / min_pieces_across) are held as
+// pieces, longer ones where more than max_pieces would be made.
 constexpr double long_triangle = 2.0;
 constexpr double min_pieces_across = 256.0;
 // A node's expansion goes into a box's lattice when its centre lies farther
@@ -93,10 +94,11 @@ uint32_t subtree_nodes(uint32_t count) {
     return count <= leaf_size ? 1 : 1 + subtree_nodes(count / 2) + subtree_nodes(count - count / 2);
 }
 
-// Appends triangle (a, b, c)'s corners, cut by longest-edge bisection into
-// pieces with no edge longer than √piece_squared (same orientation, so their
-// solid angles add up to the triangle's).
-void append_pieces(const Vec3& a, const Vec3& b, const Vec3& c, double piece_squared, std::vector<double>& corners) {
+// Triangle (a, b, c) cut by longest-edge bisection into pieces with no edge
+// longer than √piece_squared (same orientation, so their solid angles add up
+// to the triangle's): visit(p, q, r) for each piece.
+template <class Visit>
+void for_each_piece(const Vec3& a, const Vec3& b, const Vec3& c, double piece_squared, Visit&& visit) {
     const Vec3* p[3] = {&a, &b, &c};
     int longest = 0;
     double longest_squared = 0.0;
@@ -104,14 +106,11 @@ void append_pieces(const Vec3& a, const Vec3& b, const Vec3& c, double piece_squ
         const Vec3 d = *p[(e + 1) % 3] - *p[e];
         if (dot(d, d) > longest_squared) longest_squared = dot(d, d), longest = e;
     }
-    if (longest_squared > piece_squared) {
-        const Vec3 &from = *p[longest], &to = *p[(longest + 1) % 3], &apex = *p[(longest + 2) % 3];
-        const Vec3 middle = 0.5 * (from + to);
-        append_pieces(from, middle, apex, piece_squared, corners);
-        append_pieces(middle, to, apex, piece_squared, corners);
-        return;
-    }
-    for (const Vec3* corner : p) corners.insert(corners.end(), corner->begin(), corner->end());
+    if (longest_squared <= piece_squared) return visit(a, b, c);
+    const Vec3 &from = *p[longest], &to = *p[(longest + 1) % 3], &apex = *p[(longest + 2) % 3];
+    const Vec3 middle = 0.5 * (from + to);
+    for_each_piece(from, middle, apex, piece_squared, visit);
+    for_each_piece(middle, to, apex, piece_squared, visit);
 }
 
 // The far field of a node at q, times 4π: its moments about its centre
@@ -148,7 +147,7 @@ constexpr int moment_pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2
 
 }  // namespace
 
-WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
+WindingNumber::WindingNumber(const Mesh& mesh, double accuracy, size_t max_pieces) {
     const auto has_area = [&](const Triangle& t) {
         const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
         return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
@@ -164,12 +163,28 @@ WindingNumber::WindingNumber(const Mesh& mesh, double accuracy) {
     std::nth_element(longest_squared.begin(), longest_squared.begin() + longest_squared.size() / 2,
                      longest_squared.end());
     const double median = std::sqrt(longest_squared[longest_squared.size() / 2]);
-    const double piece = std::max(long_triangle * median, bounding_box(mesh).diagonal() / min_pieces_across);
+    const size_t budget = std::max(max_pieces, longest_squared.size());
+    double piece = budget > longest_squared.size()
+                       ? std::max(long_triangle * median, bounding_box(mesh).diagonal() / min_pieces_across)
+                       : HUGE_VAL;
+    const auto pieces = [&](double length) {
+        size_t count = 0;
+        for (const Triangle& t : mesh.triangles)
+            if (has_area(t))
+                for_each_piece(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], length * length,
+                               [&](const Vec3&, const Vec3&, const Vec3&) { ++count; });
+        return count;
+    };
+    while (piece < HUGE_VAL && pieces(piece) > budget) piece *= 1.25;
     std::vector<double> all_corners;
-    all_corners.reserve(longest_squared.size() * 9);
+    all_corners.reserve(std::min(budget, 2 * longest_squared.size()) * 9);
     for (const Triangle& t : mesh.triangles)
         if (has_area(t))
-            append_pieces(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], piece * piece, all_corners);
+            for_each_piece(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], piece * piece,
+                           [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+                               for (const Vec3* corner : {&a, &b, &c})
+                                   all_corners.insert(all_corners.end(), corner->begin(), corner->end());
+                           });
     const uint32_t count = uint32_t(all_corners.size() / 9);
     std::vector<double> centroids(size_t(count) * 3);
     for (uint32_t i = 0; i < count; ++i)
@@ -333,11 +348,11 @@ double WindingNumber::operator()(const Vec3& q) const {
     return walk(q, &root, 1);
 }
 
-WindingNumber::BoxField WindingNumber::box_field(const BoundingBox& box) const {
+std::optional<WindingNumber::BoxField> WindingNumber::box_field(const BoundingBox& box) const {
     BoxField field;
     field.lo = box.min;
     for (int k = 0; k < 3; ++k) field.step[k] = box.max[k] > box.min[k] ? 0.5 * (box.max[k] - box.min[k]) : 1.0;
-    if (nodes_.empty()) return field;
+    if (nodes_.empty()) return std::nullopt;
     const Vec3 centre = 0.5 * (box.min + box.max);
     const double reach = box_far_reach * 0.5 * norm(box.max - box.min);
     std::vector<uint32_t> far;
@@ -359,6 +374,7 @@ WindingNumber::BoxField WindingNumber::box_field(const BoundingBox& box) const {
             stack.push_back(index + 1);
         }
     }
+    if (field.near.size() > far.size()) return std::nullopt;
     for (int point = 0; point < 27; ++point) {
         const Vec3 q{field.lo[0] + field.step[0] * (point / 9), field.lo[1] + field.step[1] * (point / 3 % 3),
                      field.lo[2] + field.step[2] * (point % 3)};

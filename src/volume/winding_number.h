@@ -8,17 +8,19 @@
 //! the area centroid and its first and second moments; error under 1e-2 at
 //! β = 2, an eighth of the dipole's alone: winding_number_test), and near
 //! leaves summed exactly (their solid angles as the argument of one product
-//! of complex numbers, so a query takes one atan2). Triangles much longer
-//! than the input's typical one (a soup of planks, a CAD face beside fine
-//! fillets) are held as pieces by longest-edge bisection, whose solid angles
-//! add up to theirs: a query near one sums its near pieces, not every long
-//! triangle whose leaf is wide. Built once (its subtrees in parallel, TBB;
+//! of complex numbers, so a query takes one atan2). Where asked, triangles
+//! much longer than the input's typical one (a soup of planks) are held as
+//! pieces by longest-edge bisection, whose solid angles add up to theirs: a
+//! query near one sums its near pieces, not every long triangle whose leaf
+//! is wide. Built once (its subtrees in parallel, TBB;
 //! the tree does not depend on the threads), then queried concurrently from
 //! any number of threads (queries are const and allocate nothing). Costs 9
 //! doubles per piece and 176 bytes per node.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/mesh.h"
@@ -27,10 +29,15 @@ namespace fabvdb::volume {
 
 class WindingNumber {
 public:
+    static constexpr double default_accuracy = 2.0;
     //! Builds the tree over the mesh's triangles (zero-area ones are skipped;
     //! they contribute nothing). `accuracy` is Barill's β: a node is replaced
-    //! by its expansion when q is farther than β × its radius from its centroid.
-    explicit WindingNumber(const Mesh& mesh, double accuracy = 2.0);
+    //! by its expansion when q is farther than β × its radius from its
+    //! centroid. `max_pieces`: over the triangle count, triangles longer than
+    //! twice the median one are held as pieces, at most this many in all (for
+    //! many queries near an open input's long triangles; each piece costs 9
+    //! doubles and a share of a node).
+    explicit WindingNumber(const Mesh& mesh, double accuracy = default_accuracy, size_t max_pieces = 0);
 
     //! The winding number at q, from the tree.
     double operator()(const Vec3& q) const;
@@ -42,13 +49,15 @@ public:
     //! box_far_reach half-diagonals from its centre, summed once at a
     //! 3 × 3 × 3 lattice over the box (interpolated per query, triquadratic:
     //! under 1e-3 of error more, winding_number_test), and the subtrees
-    //! nearer than that, walked per query. One walk of the tree.
+    //! nearer than that, walked per query. One walk of the tree. None when
+    //! the box is wide for the triangles around it (more subtrees near it
+    //! than far: walking them would cost each query more than a plain walk).
     struct BoxField {
         Vec3 lo{0, 0, 0}, step{1, 1, 1};
         double lattice[27] = {};
         std::vector<uint32_t> near;  //!< roots of the subtrees walked per query
     };
-    BoxField box_field(const BoundingBox& box) const;
+    std::optional<BoxField> box_field(const BoundingBox& box) const;
     //! The winding number at q within the box `field` was made for.
     double operator()(const Vec3& q, const BoxField& field) const;
 
