@@ -24,9 +24,14 @@ FaithfulRepair faithful_repair(const Mesh& input, const Mesh& source, RepairOpti
         try {
             repaired = frame ? repair_in_frame(source, options, *frame, progress) : repair(source, options, progress);
         } catch (const Error& e) {
-            // A finer voxel than the budget holds: the coarser attempt stands.
-            if (attempt == 0 || e.status() != FABVDB_ERR_OUT_OF_BUDGET) throw;
-            result.fidelity.defect += "; at voxel " + millimetres(voxel) + " it would exceed the memory budget";
+            // A finer voxel than the budget holds, or one at which walls
+            // thinner than a voxel before leave no consistent inside: the
+            // coarser attempt stands, and its figures say what was tried.
+            const bool over_budget = e.status() == FABVDB_ERR_OUT_OF_BUDGET;
+            if (attempt == 0 || (!over_budget && e.status() != FABVDB_ERR_BAD_INPUT)) throw;
+            result.fidelity.defect += "; at voxel " + millimetres(voxel) +
+                                      (over_budget ? " it would exceed the memory budget"
+                                                   : " the repair found no consistent inside");
             return result;
         }
         if (attempt > 0)

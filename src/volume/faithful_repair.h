@@ -3,8 +3,8 @@
 //! and where it is not the input's model at the voxel asked for (features
 //! thinner than two voxels closed or lost, a fin of a scan, a bird's legs),
 //! the input is repaired again at half the voxel, up to `refinements` times
-//! and while the memory budget holds (a refinement the budget refuses ends
-//! the attempts) — not when the far surface with no clear solid on either
+//! and while the memory budget holds (a refinement the budget refuses, or
+//! one whose surface has no consistent inside, ends the attempts) — not when the far surface with no clear solid on either
 //! side (sheets, which no voxel size makes solid) alone fails the gate. Returns the last attempt and its figures; the caller
 //! decides what a failure means (require_faithful).
 //! Costs one repair and one fidelity measure per attempt: each halving
