@@ -142,6 +142,15 @@ double far_field(const double* area_normal, const float* m, const float* s, cons
 }
 
 
+// Half the cross product of a triangle's edges (9 doubles: its corners).
+void area_vector(const double* p, double n[3]) {
+    const double u[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
+    const double v[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+    n[0] = 0.5 * (u[1] * v[2] - u[2] * v[1]);
+    n[1] = 0.5 * (u[2] * v[0] - u[0] * v[2]);
+    n[2] = 0.5 * (u[0] * v[1] - u[1] * v[0]);
+}
+
 // The pairs (j, k) of a symmetric 3 × 3 matrix's entries xx xy xz yy yz zz.
 constexpr int moment_pair[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
 
@@ -207,10 +216,8 @@ uint32_t WindingNumber::build(uint32_t first, uint32_t count, uint32_t index, co
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (uint32_t i = first; i < first + count; ++i) {
         const double* p = &corners_[9 * size_t(order[i])];
-        const double u[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
-        const double v[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
-        const double n[3] = {0.5 * (u[1] * v[2] - u[2] * v[1]), 0.5 * (u[2] * v[0] - u[0] * v[2]),
-                             0.5 * (u[0] * v[1] - u[1] * v[0])};
+        double n[3];
+        area_vector(p, n);
         const double area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         area_sum += area;
         for (int k = 0; k < 3; ++k) {
@@ -273,10 +280,8 @@ void WindingNumber::leaf_moments(uint32_t first, uint32_t count, const std::vect
     for (uint32_t i = first; i < first + count; ++i) {
         const double* p = &corners_[9 * size_t(order[i])];
         const double* c = &centroids[3 * size_t(order[i])];
-        const double u[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
-        const double v[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
-        const double n[3] = {0.5 * (u[1] * v[2] - u[2] * v[1]), 0.5 * (u[2] * v[0] - u[0] * v[2]),
-                             0.5 * (u[0] * v[1] - u[1] * v[0])};
+        double n[3];
+        area_vector(p, n);
         const double d[3] = {c[0] - node.center[0], c[1] - node.center[1], c[2] - node.center[2]};
         double mean[6];
         for (int e = 0; e < 6; ++e) {
@@ -349,10 +354,10 @@ double WindingNumber::operator()(const Vec3& q) const {
 }
 
 std::optional<WindingNumber::BoxField> WindingNumber::box_field(const BoundingBox& box) const {
+    if (nodes_.empty()) return std::nullopt;
     BoxField field;
     field.lo = box.min;
     for (int k = 0; k < 3; ++k) field.step[k] = box.max[k] > box.min[k] ? 0.5 * (box.max[k] - box.min[k]) : 1.0;
-    if (nodes_.empty()) return std::nullopt;
     const Vec3 centre = 0.5 * (box.min + box.max);
     const double reach = box_far_reach * 0.5 * norm(box.max - box.min);
     std::vector<uint32_t> far;
